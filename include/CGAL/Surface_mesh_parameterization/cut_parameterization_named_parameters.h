@@ -1,0 +1,65 @@
+// Named parameters of the cut-and-parameterize package. CGAL 5.5 looks named
+// parameters up by tag type, so the package declares its own tags here
+// without touching CGAL. Each option `name(value)` starts a pack and
+// `name(value, pack)` appends to an existing one, e.g.
+//   namespace SMP = CGAL::Surface_mesh_parameterization;
+//   SMP::parameters::lambda(2., SMP::parameters::number_of_passes(2))
+//     .vertex_point_map(vpm)            // CGAL's own options chain as members
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_PARAMETERIZATION_NAMED_PARAMETERS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_PARAMETERIZATION_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+#define CGAL_SMP_CUT_NAMED_PARAMETER(TAG, NAME)                                          \
+  namespace internal_np { enum TAG { NAME }; }                                   \
+  namespace parameters {                                                                 \
+  template <typename K>                                                                  \
+  CGAL::Named_function_parameters<K, internal_np::TAG> NAME(const K& k)                  \
+  {                                                                                      \
+    return CGAL::Named_function_parameters<K, internal_np::TAG>(k);                      \
+  }                                                                                      \
+  template <typename K, typename T, typename Tag, typename Base>                         \
+  CGAL::Named_function_parameters<K, internal_np::TAG, CGAL::Named_function_parameters<T, Tag, Base>> \
+  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& pack)            \
+  {                                                                                      \
+    return {k, pack};                                                                    \
+  }                                                                                      \
+  }
+
+/// Distortion solver: per-face weight w_f (face -> double), default 1.
+CGAL_SMP_CUT_NAMED_PARAMETER(face_weight_map_t, face_weight_map)
+/// Distortion solver: start from the UVs in the map instead of Tutte (bool).
+CGAL_SMP_CUT_NAMED_PARAMETER(initialize_from_uv_map_t, initialize_from_uv_map)
+/// Newton stopping tolerance on the decrease of the mean distortion (double).
+CGAL_SMP_CUT_NAMED_PARAMETER(stopping_tolerance_t, stopping_tolerance)
+/// Seam cost λ, relative to the mean edge length (double, default 1).
+CGAL_SMP_CUT_NAMED_PARAMETER(lambda_t, lambda)
+/// Per-face λ (face -> double), multiplies `lambda`.
+CGAL_SMP_CUT_NAMED_PARAMETER(face_lambda_map_t, face_lambda_map)
+/// ε at the first alternation, relative to the mean edge length (default 0.1).
+CGAL_SMP_CUT_NAMED_PARAMETER(epsilon_start_t, epsilon_start)
+/// ε is halved while it stays above this value (default 0.01).
+CGAL_SMP_CUT_NAMED_PARAMETER(epsilon_end_t, epsilon_end)
+/// Alternations (u-step, v-step) per value of ε (default 3).
+CGAL_SMP_CUT_NAMED_PARAMETER(iterations_per_epsilon_t, iterations_per_epsilon)
+/// γ, keeps the distortion weight v² + γ positive (default 1e-7).
+CGAL_SMP_CUT_NAMED_PARAMETER(gamma_t, gamma)
+/// Passes of optimize -> extract cuts -> cut (default 1).
+CGAL_SMP_CUT_NAMED_PARAMETER(number_of_passes_t, number_of_passes)
+/// Output: face -> double, the discontinuity field v.
+CGAL_SMP_CUT_NAMED_PARAMETER(face_discontinuity_map_t, face_discontinuity_map)
+/// Callback bool(const Progress&); returning false stops the run.
+CGAL_SMP_CUT_NAMED_PARAMETER(progress_callback_t, progress_callback)
+/// Keep only cut paths at least this fraction of the longest one (default 0.2).
+CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut_length)
+
+#undef CGAL_SMP_CUT_NAMED_PARAMETER
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

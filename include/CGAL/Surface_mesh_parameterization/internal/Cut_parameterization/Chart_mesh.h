@@ -1,0 +1,154 @@
+// Indexed triangle mesh of the cut surface, the working representation of all
+// solvers: UV vertices (corner classes) per face, and the rest shape of each
+// face in a local 2D frame.
+#ifndef CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
+#define CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+using Vector3 = Eigen::Vector3d;
+using Vector2 = Eigen::Vector2d;
+using UV_vector = Eigen::VectorXd; // (u0, v0, u1, v1, ...)
+
+struct Chart_mesh
+{
+  std::vector<std::array<int, 3>> faces; // UV-vertex index of each corner
+  std::vector<Matrix2> rest_inverse;     // inverse of the rest edge matrix
+  std::vector<double> area;              // 3D area
+  int number_of_vertices = 0;
+
+  std::size_t number_of_faces() const { return faces.size(); }
+
+  /// Sets the rest shape of face f from its 3D corners. Returns false when
+  /// the face is degenerate (its rest shape has no inverse).
+  bool set_rest_shape(std::size_t f, const Vector3& p0, const Vector3& p1, const Vector3& p2)
+  {
+    const Vector3 e1 = p1 - p0, e2 = p2 - p0;
+    const double l1 = e1.norm();
+    const Vector3 n = e1.cross(e2);
+    const double twice_area = n.norm();
+    area[f] = 0.5 * twice_area;
+    if(!(l1 > 0.) || !(twice_area > 0.) || !std::isfinite(twice_area))
+      return false;
+    Matrix2 rest;
+    rest << l1, e1.dot(e2) / l1, 0., twice_area / l1;
+    rest_inverse[f] = rest.inverse();
+    return rest_inverse[f].allFinite();
+  }
+
+  void resize_faces(std::size_t n)
+  {
+    faces.resize(n);
+    rest_inverse.resize(n);
+    area.resize(n);
+  }
+
+  /// Edge matrix [x1-x0, x2-x0] of face f in UV.
+  Matrix2 uv_edges(const UV_vector& x, std::size_t f) const
+  {
+    const auto& t = faces[f];
+    Matrix2 D;
+    D << x[2*t[1]] - x[2*t[0]], x[2*t[2]] - x[2*t[0]],
+         x[2*t[1]+1] - x[2*t[0]+1], x[2*t[2]+1] - x[2*t[0]+1];
+    return D;
+  }
+
+  Matrix2 jacobian(const UV_vector& x, std::size_t f) const
+  {
+    return uv_edges(x, f) * rest_inverse[f];
+  }
+
+  /// 3D length of the edge of face f from corner k to corner k+1.
+  double edge_length(std::size_t f, int k) const
+  {
+    const Matrix2 rest = rest_inverse[f].inverse();
+    const Vector2 e1 = rest.col(0), e2 = rest.col(1);
+    return k == 0 ? e1.norm() : (k == 1 ? (e2 - e1).norm() : e2.norm());
+  }
+
+  double total_area() const
+  {
+    double a = 0.;
+    for(double fa : area) a += fa;
+    return a;
+  }
+};
+
+inline std::uint64_t directed_edge_key(int a, int b)
+{
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+/// Boundary loops of the chart mesh, each a cycle of UV vertices oriented
+/// like the faces (interior on the left). Empty for a closed mesh.
+inline std::vector<std::vector<int>> boundary_loops(const Chart_mesh& mesh)
+{
+  std::unordered_map<std::uint64_t, int> directed;
+  directed.reserve(3 * mesh.faces.size());
+  for(const auto& t : mesh.faces)
+    for(int k = 0; k < 3; ++k)
+      directed.emplace(directed_edge_key(t[k], t[(k+1)%3]), 0);
+
+  std::unordered_map<int, int> next; // boundary successor
+  for(const auto& t : mesh.faces)
+    for(int k = 0; k < 3; ++k)
+      if(!directed.count(directed_edge_key(t[(k+1)%3], t[k])))
+        next.emplace(t[k], t[(k+1)%3]);
+
+  std::vector<std::vector<int>> loops;
+  std::unordered_map<int, bool> visited;
+  for(const auto& entry : next)
+  {
+    if(visited[entry.first]) continue;
+    std::vector<int> loop;
+    int v = entry.first;
+    while(!visited[v])
+    {
+      visited[v] = true;
+      loop.push_back(v);
+      auto it = next.find(v);
+      if(it == next.end()) break;
+      v = it->second;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+/// Number of connected components of the chart mesh (through shared UV vertices).
+inline std::vector<int> chart_of_faces(const Chart_mesh& mesh, int& number_of_charts)
+{
+  std::vector<int> parent(mesh.number_of_vertices);
+  for(int i = 0; i < mesh.number_of_vertices; ++i) parent[i] = i;
+  auto find = [&](int i) { while(parent[i] != i) i = parent[i] = parent[parent[i]]; return i; };
+  for(const auto& t : mesh.faces)
+  {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  std::unordered_map<int, int> chart_id;
+  std::vector<int> chart(mesh.faces.size());
+  for(std::size_t f = 0; f < mesh.faces.size(); ++f)
+    chart[f] = chart_id.emplace(find(mesh.faces[f][0]), int(chart_id.size())).first->second;
+  number_of_charts = int(chart_id.size());
+  return chart;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,98 @@
+// Weighted symmetric Dirichlet energy  sum_f w_f A_f Psi_f(u), with the
+// flip-free step bound of Smith & Schaefer 2015.
+#ifndef CGAL_SMP_CUT_INTERNAL_DISTORTION_TERM_H
+#define CGAL_SMP_CUT_INTERNAL_DISTORTION_TERM_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+class Distortion_term : public Energy_term
+{
+  const Chart_mesh& mesh_;
+  const std::vector<double>& weights_; // w_f, read at every evaluation
+  std::vector<Eigen::Matrix<double, 4, 6>> jacobian_operators_;
+  int first_element_ = 0;
+
+public:
+  Distortion_term(const Chart_mesh& mesh, const std::vector<double>& weights)
+    : mesh_(mesh), weights_(weights)
+  {
+    jacobian_operators_.reserve(mesh.number_of_faces());
+    for(const Matrix2& rest_inverse : mesh.rest_inverse)
+      jacobian_operators_.push_back(jacobian_operator(rest_inverse));
+  }
+
+  void declare_elements(Hessian_assembler& hessian) override
+  {
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+    {
+      const auto& t = mesh_.faces[f];
+      const int element = hessian.add_element({2*t[0], 2*t[0]+1, 2*t[1], 2*t[1]+1, 2*t[2], 2*t[2]+1});
+      if(f == 0) first_element_ = element;
+    }
+  }
+
+  /// Sum of w_f A_f: the energy's natural scale, used by scale-free stopping rules.
+  double weighted_area() const
+  {
+    double s = 0.;
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f) s += weights_[f] * mesh_.area[f];
+    return s;
+  }
+
+  double value(const UV_vector& x) const override
+  {
+    double energy = 0.;
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+    {
+      if(weights_[f] == 0.) continue;
+      energy += weights_[f] * mesh_.area[f] * symmetric_dirichlet(mesh_.jacobian(x, f));
+    }
+    return energy;
+  }
+
+  void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
+                                Hessian_assembler& hessian) const override
+  {
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+    {
+      const double w = weights_[f] * mesh_.area[f];
+      if(w == 0.) continue;
+      const Matrix2 J = mesh_.jacobian(x, f);
+      const auto& B = jacobian_operators_[f];
+      const Eigen::Matrix<double, 6, 1> g = w * (B.transpose() * symmetric_dirichlet_gradient(J));
+      const Eigen::Matrix<double, 6, 6> H =
+        w * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
+      const auto& t = mesh_.faces[f];
+      for(int k = 0; k < 3; ++k)
+      {
+        gradient[2*t[k]] += g[2*k];
+        gradient[2*t[k]+1] += g[2*k+1];
+      }
+      hessian.add(first_element_ + int(f), H);
+    }
+  }
+
+  double max_step(const UV_vector& x, const UV_vector& dx) const override
+  {
+    double t = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+      t = (std::min)(t, first_collapse_time(mesh_.uv_edges(x, f), mesh_.uv_edges(dx, f)));
+    return t;
+  }
+};
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

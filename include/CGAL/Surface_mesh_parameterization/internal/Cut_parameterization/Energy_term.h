@@ -1,0 +1,44 @@
+// Interface of an energy term minimized by the projected Newton solver. New
+// terms (box penalty, boundary barrier, ...) implement it and are added to the
+// solver without touching its loop.
+#ifndef CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
+#define CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Hessian_assembler.h>
+
+#include <limits>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+class Energy_term
+{
+public:
+  virtual ~Energy_term() = default;
+
+  /// Declares the Hessian blocks the term writes (called once per sparsity pattern).
+  virtual void declare_elements(Hessian_assembler& hessian) = 0;
+
+  /// Energy at x; +infinity where x is not admissible (e.g. a flipped face).
+  virtual double value(const UV_vector& x) const = 0;
+
+  /// Adds the gradient to `gradient` and a positive semi-definite Hessian approximation to `hessian`.
+  virtual void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
+                                        Hessian_assembler& hessian) const = 0;
+
+  /// Largest step t along dx such that x + s dx stays admissible for all s < t.
+  virtual double max_step(const UV_vector&, const UV_vector&) const
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+};
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,192 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// UV of the corner at target(h) in face(h): `uvmap` may be keyed by
+/// halfedges (one UV per corner) or by vertices (e.g. a Seam_mesh's vertices,
+/// or a plain mesh without seams).
+template <typename TriangleMesh, typename UVMap>
+Vector2 corner_uv(const TriangleMesh& mesh, const UVMap& uvmap,
+                  typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  using key_type = typename boost::property_traits<UVMap>::key_type;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  if constexpr(std::is_same<key_type, halfedge_descriptor>::value)
+  {
+    const auto& p = get(uvmap, h);
+    return Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  }
+  else
+  {
+    const auto& p = get(uvmap, target(h, mesh));
+    return Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  }
+}
+
+template <typename Point>
+Vector3 to_vector3(const Point& p)
+{
+  return Vector3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+/// 3D area and UV Jacobian of face f; the Jacobian is NaN for a degenerate face.
+template <typename TriangleMesh, typename UVMap, typename VertexPointMap>
+std::pair<double, Matrix2> face_area_and_jacobian(
+  typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+  const TriangleMesh& mesh, const UVMap& uvmap, const VertexPointMap& vpm)
+{
+  auto h = halfedge(f, mesh);
+  const auto h1 = next(h, mesh), h2 = next(h1, mesh);
+  Chart_mesh one;
+  one.resize_faces(1);
+  if(!one.set_rest_shape(0, to_vector3(get(vpm, target(h, mesh))),
+                         to_vector3(get(vpm, target(h1, mesh))), to_vector3(get(vpm, target(h2, mesh)))))
+    return {one.area[0], Matrix2::Constant(std::numeric_limits<double>::quiet_NaN())};
+  const Vector2 u0 = corner_uv(mesh, uvmap, h), u1 = corner_uv(mesh, uvmap, h1), u2 = corner_uv(mesh, uvmap, h2);
+  Matrix2 D;
+  D << u1.x() - u0.x(), u2.x() - u0.x(), u1.y() - u0.y(), u2.y() - u0.y();
+  return {one.area[0], D * one.rest_inverse[0]};
+}
+
+template <typename TriangleMesh, typename NamedParameters>
+auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, mesh));
+}
+
+} // namespace cut
+} // namespace internal
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Distortion of one face: σ1² + σ2² + σ1⁻² + σ2⁻² of the map from its 3D
+/// triangle to its UV triangle (4 for an isometry, +∞ for a flipped or
+/// collapsed UV triangle or a degenerate 3D face).
+///
+/// `uvmap` is keyed either by halfedges (UV of the corner at `target(h)` in
+/// `face(h)`, as written by `cut_and_parameterize()`) or by vertices
+/// (e.g. of a `CGAL::Seam_mesh`).
+/// Named parameters: `vertex_point_map` (CGAL).
+/// \pre `f` is a triangle
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                       const TriangleMesh& mesh, const UVMap& uvmap,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto aj = internal::cut::face_area_and_jacobian(f, mesh, uvmap, internal::cut::vertex_points(mesh, np));
+  if(!aj.second.allFinite()) return std::numeric_limits<double>::infinity();
+  return internal::cut::symmetric_dirichlet_measure(aj.second);
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// The distortion E_d = Σ_f A_f (σ1²+σ2²+σ1⁻²+σ2⁻²) / Σ_f A_f of a UV map
+/// (A_f: 3D area), as in the paper's Table 1. Minimum 4; +∞ if any face is
+/// flipped or collapsed in UV. Zero-area 3D faces have no weight.
+/// Named parameters: `vertex_point_map` (CGAL). `uvmap` as in `face_distortion()`.
+/// \pre `mesh` is a non-empty triangle mesh
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto vpm = internal::cut::vertex_points(mesh, np);
+  double sum = 0., area = 0.;
+  for(auto f : faces(mesh))
+  {
+    const auto aj = internal::cut::face_area_and_jacobian(f, mesh, uvmap, vpm);
+    if(!(aj.first > 0.)) continue;
+    if(!aj.second.allFinite() || !(aj.second.determinant() > 0.))
+      return std::numeric_limits<double>::infinity();
+    sum += aj.first * internal::cut::symmetric_dirichlet_measure(aj.second);
+    area += aj.first;
+  }
+  return area > 0. ? sum / area : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Number of faces whose UV triangle has a non-positive signed area.
+/// `uvmap` as in `face_distortion()`.
+template <typename TriangleMesh, typename UVMap>
+std::size_t number_of_flipped_faces(const TriangleMesh& mesh, const UVMap& uvmap)
+{
+  std::size_t flipped = 0;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const auto u0 = internal::cut::corner_uv(mesh, uvmap, h);
+    const auto u1 = internal::cut::corner_uv(mesh, uvmap, next(h, mesh));
+    const auto u2 = internal::cut::corner_uv(mesh, uvmap, next(next(h, mesh), mesh));
+    const double signed_area2 = (u1 - u0).x() * (u2 - u0).y() - (u1 - u0).y() * (u2 - u0).x();
+    if(!(signed_area2 > 0.)) ++flipped;
+  }
+  return flipped;
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Total 3D area of the mesh's faces.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double surface_area(const TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto vpm = internal::cut::vertex_points(mesh, np);
+  double area = 0.;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const auto p0 = internal::cut::to_vector3(get(vpm, source(h, mesh)));
+    const auto p1 = internal::cut::to_vector3(get(vpm, target(h, mesh)));
+    const auto p2 = internal::cut::to_vector3(get(vpm, target(next(h, mesh), mesh)));
+    area += 0.5 * (p1 - p0).cross(p2 - p0).norm();
+  }
+  return area;
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// The seam length E_s = L / sqrt(A / π): L the total 3D length of the edges
+/// flagged in `seam_edge_map` (each once; edges on the mesh's own boundary
+/// excluded), A the total 3D area. 0 for no seam.
+/// Named parameters: `vertex_point_map` (CGAL).
+template <typename TriangleMesh, typename SeamEdgeMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double seam_length(const TriangleMesh& mesh, const SeamEdgeMap& seam_edge_map,
+                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto vpm = internal::cut::vertex_points(mesh, np);
+  double length = 0.;
+  for(auto e : edges(mesh))
+  {
+    if(!get(seam_edge_map, e) || is_border(e, mesh)) continue;
+    const auto h = halfedge(e, mesh);
+    length += (internal::cut::to_vector3(get(vpm, target(h, mesh)))
+               - internal::cut::to_vector3(get(vpm, source(h, mesh)))).norm();
+  }
+  const double area = surface_area(mesh, np);
+  return area > 0. ? length / std::sqrt(area / M_PI) : 0.;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

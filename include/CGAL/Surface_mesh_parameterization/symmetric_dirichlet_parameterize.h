@@ -1,0 +1,150 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_SYMMETRIC_DIRICHLET_PARAMETERIZE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_SYMMETRIC_DIRICHLET_PARAMETERIZE_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+
+#include <CGAL/boost/graph/properties.h>
+#include <boost/property_map/property_map.hpp>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+inline Error_code to_error_code(Indexing_status status)
+{
+  switch(status)
+  {
+    case Indexing_status::OK: return OK;
+    case Indexing_status::EMPTY: return ERROR_EMPTY_MESH;
+    case Indexing_status::NOT_TRIANGLE: return ERROR_NON_TRIANGULAR_MESH;
+    default: return ERROR_NON_FINITE_COORDINATE;
+  }
+}
+
+/// Reads UVs of every corner from a vertex-keyed map.
+template <typename TriangleMesh, typename VertexUVMap>
+void read_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMesh>& surface,
+                     const std::vector<int>& corner_uv, VertexUVMap uvmap, UV_vector& x)
+{
+  for(std::size_t c = 0; c < corner_uv.size(); ++c)
+  {
+    const auto& p = get(uvmap, target(surface.corner_halfedge[c / 3][c % 3], mesh));
+    x[2*corner_uv[c]] = CGAL::to_double(p.x());
+    x[2*corner_uv[c]+1] = CGAL::to_double(p.y());
+  }
+}
+
+template <typename TriangleMesh, typename VertexUVMap>
+void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMesh>& surface,
+                      const std::vector<int>& corner_uv, const UV_vector& x, VertexUVMap uvmap)
+{
+  using Point_2 = typename boost::property_traits<VertexUVMap>::value_type;
+  for(std::size_t c = 0; c < corner_uv.size(); ++c)
+    put(uvmap, target(surface.corner_halfedge[c / 3][c % 3], mesh),
+        Point_2(x[2*corner_uv[c]], x[2*corner_uv[c]+1]));
+}
+
+} // namespace cut
+} // namespace internal
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Computes a flip-free UV map of a topological disk that minimizes the
+/// weighted symmetric Dirichlet energy Σ_f w_f A_f Ψ_f(u), with
+/// Ψ = ½(σ1² + σ2² + σ1⁻² + σ2⁻²) − 2.
+///
+/// Starts from a Tutte embedding (uniform weights, boundary on a circle of
+/// the mesh's area), or from the UVs in `uvmap`, and runs projected Newton
+/// (analytic eigensystem of Ψ, sparse Cholesky with the symbolic analysis
+/// done once) with a line search that never lets a face collapse.
+///
+/// Stopping rule: the Newton decrement -gᵀd, divided by Σ_f w_f A_f, falls
+/// below `stopping_tolerance`. Both scale with the square of the mesh size,
+/// so the same mesh scaled by any factor stops at the same map up to scale.
+///
+/// Works through the seam-mesh convention: with `TriangleMesh` a
+/// `CGAL::Seam_mesh`, the mesh is the one opened by the seams and `uvmap` is
+/// keyed by its vertices, i.e. by halfedges of the underlying mesh.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam VertexUVMap a `ReadWritePropertyMap` from vertex descriptors to a 2D point type
+///
+/// \param mesh a topological disk (one connected component, one boundary loop)
+/// \param uvmap output UVs (and input when `initialize_from_uv_map(true)`)
+/// \param np optional named parameters:
+///   - `vertex_point_map` (CGAL): 3D positions; default `get(vertex_point, mesh)`
+///   - `face_weight_map`: face → double weight w_f ≥ 0; default 1
+///   - `initialize_from_uv_map`: bool, start from `uvmap` (must have no flipped face); default false
+///   - `number_of_iterations` (CGAL): maximum Newton iterations; default 500
+///   - `stopping_tolerance`: double; default 1e-9
+///
+/// \pre every face is a triangle with non-zero area
+/// \post on `OK`, every face has a UV triangle of positive signed area
+///
+/// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
+///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`,
+///   `ERROR_DEGENERATE_FACE`, `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
+///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
+template <typename TriangleMesh, typename VertexUVMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMap uvmap,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ic = internal::cut;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  ic::Indexed_surface<TriangleMesh> surface;
+  const Error_code indexing = ic::to_error_code(ic::index_surface(mesh, vpm, surface));
+  if(indexing != OK) return indexing;
+
+  ic::Chart_mesh chart;
+  std::vector<int> corner_uv;
+  if(!ic::build_chart_mesh(surface, std::vector<char>(surface.edges.size(), 0), chart, corner_uv))
+    return ERROR_DEGENERATE_FACE;
+
+  std::vector<double> weights(chart.number_of_faces(), 1.);
+  const auto weight_map = choose_parameter(get_parameter(np, internal_np::face_weight_map),
+                                           CGAL::Constant_property_map<typename ic::Indexed_surface<TriangleMesh>::face_descriptor, double>(1.));
+  for(std::size_t f = 0; f < weights.size(); ++f)
+  {
+    weights[f] = get(weight_map, surface.faces[f]);
+    if(!(weights[f] >= 0.) || !std::isfinite(weights[f])) return ERROR_WRONG_PARAMETER;
+  }
+
+  ic::UV_vector x(2 * chart.number_of_vertices);
+  if(choose_parameter(get_parameter(np, internal_np::initialize_from_uv_map), false))
+  {
+    ic::read_vertex_uvs(mesh, surface, corner_uv, uvmap, x);
+    if(!x.allFinite() || ic::number_of_flipped_faces(chart, x) > 0) return ERROR_NO_1_TO_1_MAPPING;
+  }
+  else
+  {
+    int charts = 0;
+    ic::chart_of_faces(chart, charts);
+    const auto loops = ic::boundary_loops(chart);
+    if(charts != 1 || loops.size() != 1) return ERROR_NO_TOPOLOGICAL_DISC;
+    if(!ic::tutte_embedding(chart, loops.front(), x)) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    if(ic::number_of_flipped_faces(chart, x) > 0) return ERROR_NO_1_TO_1_MAPPING;
+  }
+
+  ic::Distortion_minimizer minimizer(chart, std::move(weights));
+  const ic::Newton_report report = minimizer.minimize(
+    x, choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 500),
+    choose_parameter(get_parameter(np, internal_np::stopping_tolerance), 1e-9));
+  if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  ic::write_vertex_uvs(mesh, surface, corner_uv, x, uvmap);
+  return OK;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
