@@ -68,7 +68,7 @@ std::pair<double, Matrix2> face_area_and_jacobian(
 template <typename TriangleMesh, typename NamedParameters>
 auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
 {
-  return parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                       get_const_property_map(CGAL::vertex_point, mesh));
 }
 

@@ -74,7 +74,7 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 /// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
 /// \tparam VertexUVMap a `ReadWritePropertyMap` from vertex descriptors to a 2D point type
 ///
-/// \param mesh a topological disk (one connected component, one boundary loop)
+/// \param mesh a topological disk, or several disjoint ones (each then gets its own circle)
 /// \param uvmap output UVs (and input when `initialize_from_uv_map(true)`)
 /// \param np optional named parameters:
 ///   - `vertex_point_map` (CGAL): 3D positions; default `get(vertex_point, mesh)`
@@ -127,11 +127,9 @@ Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMa
   }
   else
   {
-    int charts = 0;
-    ic::chart_of_faces(chart, charts);
-    const auto loops = ic::boundary_loops(chart);
-    if(charts != 1 || loops.size() != 1) return ERROR_NO_TOPOLOGICAL_DISC;
-    if(!ic::tutte_embedding(chart, loops.front(), x)) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    const ic::Embedding_status embedding = ic::disk_charts_embedding(chart, x);
+    if(embedding == ic::Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
+    if(embedding == ic::Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     if(ic::number_of_flipped_faces(chart, x) > 0) return ERROR_NO_1_TO_1_MAPPING;
   }
 

@@ -17,38 +17,54 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-/// 3D lengths of the boundary edges leaving each vertex of `loop`.
-inline std::vector<double> boundary_edge_lengths(const Chart_mesh& mesh, const std::vector<int>& loop)
+using Edge_length_map = std::unordered_map<std::uint64_t, double>;
+
+/// 3D length of every directed face edge (a, b) of the chart mesh.
+inline Edge_length_map directed_edge_lengths(const Chart_mesh& mesh)
 {
-  std::unordered_map<std::uint64_t, double> length;
+  Edge_length_map length;
+  length.reserve(3 * mesh.number_of_faces());
   for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
     for(int k = 0; k < 3; ++k)
       length[directed_edge_key(mesh.faces[f][k], mesh.faces[f][(k+1)%3])] = mesh.edge_length(f, k);
-  std::vector<double> lengths(loop.size());
-  for(std::size_t i = 0; i < loop.size(); ++i)
-    lengths[i] = length[directed_edge_key(loop[i], loop[(i+1) % loop.size()])];
-  return lengths;
+  return length;
 }
 
-/// Writes the Tutte embedding into x. Precondition: `loop` is the only
-/// boundary loop of a connected mesh. Returns false if the linear solve fails.
-inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<int>& loop, UV_vector& x)
+/// A boundary loop pinned on a circle.
+struct Pinned_loop
+{
+  std::vector<int> vertices;
+  Vector2 center = Vector2::Zero();
+  double radius = 1.;
+};
+
+/// Writes the Tutte embedding into x: each loop on its circle, every other
+/// vertex at the mean of its neighbours. Precondition: each connected
+/// component has exactly one of the loops as its only boundary. Components
+/// do not interact, so one solve embeds them all. False if the solve fails.
+inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<Pinned_loop>& loops, UV_vector& x)
 {
   const int n = mesh.number_of_vertices;
   x.setZero(2 * n);
-  const std::vector<double> lengths = boundary_edge_lengths(mesh, loop);
-  double perimeter = 0.;
-  for(double l : lengths) perimeter += l;
-  const double radius = std::sqrt(mesh.total_area() / M_PI);
   std::vector<char> on_boundary(n, 0);
-  double arc = 0.;
-  for(std::size_t i = 0; i < loop.size(); ++i)
+  const Edge_length_map length = directed_edge_lengths(mesh);
+  for(const Pinned_loop& loop : loops)
   {
-    const double angle = 2. * M_PI * arc / perimeter;
-    x[2*loop[i]] = radius * std::cos(angle);
-    x[2*loop[i]+1] = radius * std::sin(angle);
-    on_boundary[loop[i]] = 1;
-    arc += lengths[i];
+    const std::size_t m = loop.vertices.size();
+    std::vector<double> lengths(m);
+    double perimeter = 0.;
+    for(std::size_t i = 0; i < m; ++i)
+      perimeter += lengths[i] = length.at(directed_edge_key(loop.vertices[i], loop.vertices[(i+1) % m]));
+    double arc = 0.;
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const double angle = 2. * M_PI * arc / perimeter;
+      const int v = loop.vertices[i];
+      x[2*v] = loop.center.x() + loop.radius * std::cos(angle);
+      x[2*v+1] = loop.center.y() + loop.radius * std::sin(angle);
+      on_boundary[v] = 1;
+      arc += lengths[i];
+    }
   }
 
   std::vector<int> interior_index(n, -1);
@@ -97,6 +113,40 @@ inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<int>& loop
       if(interior_index[v] >= 0) x[2*v+c] = solution[interior_index[v]];
   }
   return true;
+}
+
+enum class Embedding_status { OK, NOT_DISKS, SOLVE_FAILED };
+
+/// Tutte embedding of a chart mesh whose components are all topological
+/// disks, each on its own circle (of its own area), circles side by side.
+inline Embedding_status disk_charts_embedding(const Chart_mesh& mesh, UV_vector& x)
+{
+  int number_of_charts = 0;
+  const std::vector<int> chart_of_face = chart_of_faces(mesh, number_of_charts);
+  std::vector<int> chart_of_vertex(mesh.number_of_vertices, -1);
+  std::vector<double> chart_area(number_of_charts, 0.);
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    for(int v : mesh.faces[f]) chart_of_vertex[v] = chart_of_face[f];
+    chart_area[chart_of_face[f]] += mesh.area[f];
+  }
+  std::vector<Pinned_loop> pinned(number_of_charts);
+  std::vector<int> loops_per_chart(number_of_charts, 0);
+  for(std::vector<int>& loop : boundary_loops(mesh))
+  {
+    const int c = chart_of_vertex[loop.front()];
+    if(++loops_per_chart[c] > 1) return Embedding_status::NOT_DISKS;
+    pinned[c].vertices = std::move(loop);
+  }
+  double left = 0.;
+  for(int c = 0; c < number_of_charts; ++c)
+  {
+    if(loops_per_chart[c] != 1 || pinned[c].vertices.size() < 3) return Embedding_status::NOT_DISKS;
+    pinned[c].radius = std::sqrt(chart_area[c] / M_PI);
+    pinned[c].center = Vector2(left + pinned[c].radius, 0.);
+    left += 2.2 * pinned[c].radius;
+  }
+  return tutte_embedding(mesh, pinned, x) ? Embedding_status::OK : Embedding_status::SOLVE_FAILED;
 }
 
 } // namespace cut

@@ -1,0 +1,223 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_AND_PARAMETERIZE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_AND_PARAMETERIZE_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+
+#include <functional>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgCutParameterizationRef
+/// State reported to the `progress_callback` named parameter.
+struct Cut_and_parameterize_progress
+{
+  const char* phase = "";      ///< "initialize", "alternate", "cut", "final"
+  int pass = 0;                ///< current pass, from 0
+  int alternation = 0;         ///< alternations done in this pass
+  int alternations_per_pass = 0;
+  double epsilon = 0.;         ///< current ε (relative to the mean edge length)
+  double distortion = 0.;      ///< current E_d (of the v-weighted map while alternating)
+};
+
+/// \ingroup PkgCutParameterizationRef
+/// Outcome of `cut_and_parameterize()`.
+struct Cut_and_parameterize_result
+{
+  Error_code error = OK;               ///< `OK` or the reason of the failure
+  std::size_t number_of_charts = 0;    ///< connected components of the cut mesh
+  std::size_t number_of_seam_edges = 0;///< seam edges (mesh boundary excluded)
+  std::size_t newton_iterations = 0;   ///< total projected Newton iterations
+  double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
+  double distortion = 0.;              ///< E_d of the result
+  double seam_length = 0.;             ///< E_s of the result (initial cut included)
+  bool ok() const { return error == OK; }
+};
+
+namespace internal {
+namespace cut {
+
+/// Writable face map that drops what it is given (no v output requested).
+struct Ignored_face_map
+{
+  template <typename Key, typename Value>
+  friend void put(const Ignored_face_map&, const Key&, const Value&) {}
+};
+
+template <typename NamedParameters>
+Joint_settings joint_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Joint_settings s;
+  s.lambda = choose_parameter(get_parameter(np, internal_np::lambda), s.lambda);
+  s.epsilon_start = choose_parameter(get_parameter(np, internal_np::epsilon_start), s.epsilon_start);
+  s.epsilon_end = choose_parameter(get_parameter(np, internal_np::epsilon_end), s.epsilon_end);
+  s.iterations_per_epsilon = choose_parameter(get_parameter(np, internal_np::iterations_per_epsilon), s.iterations_per_epsilon);
+  s.gamma = choose_parameter(get_parameter(np, internal_np::gamma), s.gamma);
+  s.passes = choose_parameter(get_parameter(np, internal_np::number_of_passes), s.passes);
+  s.minimum_relative_cut_length = choose_parameter(get_parameter(np, internal_np::minimum_relative_cut_length),
+                                                   s.minimum_relative_cut_length);
+  s.max_newton_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                             s.max_newton_iterations);
+  const std::function<bool(const Cut_and_parameterize_progress&)> callback =
+    choose_parameter(get_parameter(np, internal_np::progress_callback),
+                     std::function<bool(const Cut_and_parameterize_progress&)>());
+  if(callback)
+    s.progress = [callback](const Joint_progress& p) {
+      Cut_and_parameterize_progress q;
+      q.phase = p.phase;
+      q.pass = p.pass;
+      q.alternation = p.alternation;
+      q.alternations_per_pass = p.alternations_per_pass;
+      q.epsilon = p.epsilon;
+      q.distortion = p.distortion;
+      return callback(q);
+    };
+  return s;
+}
+
+/// UV of every corner at its halfedge; a border halfedge gets the UV of the
+/// corner at its target in the face across.
+template <typename TriangleMesh, typename HalfedgeUVMap>
+void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMesh>& surface,
+                      const Joint_state& state, HalfedgeUVMap uvmap)
+{
+  using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
+  auto uv = [&](int corner) {
+    const int i = state.corner_uv[corner];
+    return Point_2(state.x[2*i], state.x[2*i+1]);
+  };
+  for(std::size_t c = 0; c < state.corner_uv.size(); ++c)
+    put(uvmap, surface.corner_halfedge[c / 3][c % 3], uv(int(c)));
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < 0)
+      put(uvmap, opposite(surface.face_edge_halfedge(fe), mesh), uv(fe));
+}
+
+/// Seams = cut edges that are not on the mesh's boundary.
+template <typename Surface, typename SeamEdgeMap>
+void write_seams(const Surface& surface, const Joint_state& state, SeamEdgeMap seam_edge_map)
+{
+  std::vector<char> border(surface.edges.size(), 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < 0) border[surface.edge_of[fe]] = 1;
+  for(std::size_t e = 0; e < surface.edges.size(); ++e)
+    put(seam_edge_map, surface.edges[e], bool(state.is_cut[e] && !border[e]));
+}
+
+template <typename Surface>
+void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_parameterize_result& result)
+{
+  int charts = 0;
+  chart_of_faces(state.chart, charts);
+  result.number_of_charts = std::size_t(charts);
+  double seam = 0.;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] > fe && state.is_cut[surface.edge_of[fe]])
+    {
+      seam += surface.edge_length(fe);
+      ++result.number_of_seam_edges;
+    }
+  result.seam_length = seam / std::sqrt(state.chart.total_area() / M_PI);
+  result.newton_iterations = state.newton_iterations;
+  result.initial_distortion = state.initial_distortion;
+  result.distortion = mean_distortion(state.chart, state.x);
+}
+
+} // namespace cut
+} // namespace internal
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Cuts a triangle mesh and computes a flip-free, low-distortion UV map of
+/// the cut mesh, optimizing seams and distortion together with the
+/// Ambrosio–Tortorelli method of Weill-Duflos, Coeurjolly, de Goes and
+/// Lachaud (2023).
+///
+/// A per-face discontinuity field v ∈ (0,1] and the UVs are optimized
+/// alternately on E = Σ_f A_f (v_f² + γ) Ψ_f(u) + λ A_f (ε |∇v|² + (1−v_f)²/(4ε))
+/// while ε decreases from `epsilon_start` to `epsilon_end`; cuts are then
+/// extracted along the faces with v < 1/2 and the cut mesh is re-optimized
+/// without weights (v = 1).
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
+/// \tparam SeamEdgeMap a `ReadWritePropertyMap`, edge → bool
+/// \tparam HalfedgeUVMap a `WritablePropertyMap`, halfedge → 2D point
+///
+/// \param mesh the input triangle mesh, a topological disk (closed and
+///   higher-genus meshes need an initial cut, given as seams)
+/// \param seam_edge_map input: seams the user already has (kept);
+///   output: all seams (input ones plus those found)
+/// \param uvmap output: for every halfedge h with a face, the UV of the
+///   corner at `target(h)` in `face(h)`; for border halfedges the UV of the
+///   corner at their target in the adjacent face. Corners shared across a
+///   non-seam edge get identical UVs, so the map is usable as the vertex UV
+///   map of `CGAL::Seam_mesh` built from `seam_edge_map` (see `make_seam_mesh()`).
+/// \param np optional named parameters (in `CGAL::Surface_mesh_parameterization::parameters`
+///   unless marked CGAL):
+///   - `lambda`: seam cost λ, relative to the mean edge length; default 1
+///   - `face_lambda_map`: face → double multiplying λ (assisted cutting); default 1
+///   - `epsilon_start`, `epsilon_end`: ε range, relative to the mean edge length; default 0.1, 0.01
+///   - `iterations_per_epsilon`: alternations per ε; default 3
+///   - `gamma`: default 1e-7
+///   - `number_of_passes`: optimize → cut rounds; default 1
+///   - `minimum_relative_cut_length`: keep cut paths at least this fraction of the longest; default 0.2
+///   - `face_discontinuity_map`: output face → double, the field v of the last pass
+///   - `progress_callback`: `std::function<bool(const Cut_and_parameterize_progress&)>`;
+///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
+///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
+///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
+///
+/// \pre the mesh is a triangle mesh
+/// \post on success, no face of the UV map is flipped, and every seam edge is
+///   an edge of the mesh that is not on its boundary
+template <typename TriangleMesh, typename SeamEdgeMap, typename HalfedgeUVMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Cut_and_parameterize_result
+cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, HalfedgeUVMap uvmap,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ic = internal::cut;
+  using Surface = ic::Indexed_surface<TriangleMesh>;
+  using face_descriptor = typename Surface::face_descriptor;
+
+  Cut_and_parameterize_result result;
+  Surface surface;
+  result.error = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
+  if(result.error != OK) return result;
+
+  const ic::Joint_settings settings = internal::cut::joint_settings(np);
+  std::vector<double> face_lambda(surface.number_of_faces());
+  const auto lambda_map = choose_parameter(get_parameter(np, internal_np::face_lambda_map),
+                                           CGAL::Constant_property_map<face_descriptor, double>(1.));
+  for(std::size_t f = 0; f < face_lambda.size(); ++f)
+  {
+    face_lambda[f] = get(lambda_map, surface.faces[f]);
+    if(!(face_lambda[f] > 0.) || !std::isfinite(face_lambda[f])) { result.error = ERROR_WRONG_PARAMETER; return result; }
+  }
+
+  ic::Joint_state state;
+  state.is_cut.resize(surface.edges.size());
+  for(std::size_t e = 0; e < surface.edges.size(); ++e) state.is_cut[e] = get(seam_edge_map, surface.edges[e]);
+
+  result.error = ic::joint_optimization(surface, face_lambda, settings, state);
+  if(result.error != OK) return result;
+
+  ic::write_corner_uvs(mesh, surface, state, uvmap);
+  ic::write_seams(surface, state, seam_edge_map);
+  auto v_map = choose_parameter(get_parameter(np, internal_np::face_discontinuity_map), ic::Ignored_face_map());
+  for(std::size_t f = 0; f < surface.number_of_faces(); ++f) put(v_map, surface.faces[f], state.v.size() ? state.v[f] : 1.);
+  ic::fill_statistics(surface, state, result);
+  return result;
+}
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

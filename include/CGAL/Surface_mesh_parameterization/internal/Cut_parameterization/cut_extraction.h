@@ -1,0 +1,212 @@
+// Turns the discontinuity field v into seam paths (METHOD.md, "Cut
+// extraction"): patches of faces with v < 1/2; in each patch a path of mesh
+// edges found by Dijkstra searches on the patch's edge graph (near-linear,
+// no all-pairs search); paths shorter than a fraction of the longest dropped.
+//
+// A patch that touches the boundary of the cut mesh gets the path from its
+// vertex farthest from that boundary back to it, so the cut opens the chart
+// instead of making a closed slit, and never leaves and re-enters the
+// boundary (which would split a chart). Other patches get their diameter
+// path, found by two sweeps.
+#ifndef CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
+#define CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+struct Cut_path
+{
+  std::vector<int> edges; // indices into surface.edges
+  double length = 0.;     // 3D length of the edges not already on the boundary
+};
+
+/// Edge graph of one patch, on local vertex indices.
+struct Patch_graph
+{
+  struct Arc { int to, edge; double weight; };
+  std::vector<int> vertex;              // local -> surface vertex
+  std::vector<std::vector<Arc>> arcs;
+  std::vector<char> on_boundary;        // vertex lies on the cut mesh's boundary
+};
+
+/// Dijkstra from several sources at distance 0; returns distances and the
+/// arc used to reach each vertex (-1 for sources and unreached vertices).
+inline void dijkstra(const Patch_graph& graph, const std::vector<int>& sources,
+                     std::vector<double>& distance, std::vector<int>& parent, std::vector<int>& parent_edge)
+{
+  const std::size_t n = graph.vertex.size();
+  distance.assign(n, std::numeric_limits<double>::infinity());
+  parent.assign(n, -1);
+  parent_edge.assign(n, -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for(int s : sources) { distance[s] = 0.; queue.push({0., s}); }
+  while(!queue.empty())
+  {
+    const auto [d, u] = queue.top();
+    queue.pop();
+    if(d > distance[u]) continue;
+    for(const auto& arc : graph.arcs[u])
+    {
+      const double nd = d + arc.weight;
+      if(nd < distance[arc.to])
+      {
+        distance[arc.to] = nd;
+        parent[arc.to] = u;
+        parent_edge[arc.to] = arc.edge;
+        queue.push({nd, arc.to});
+      }
+    }
+  }
+}
+
+inline int farthest(const std::vector<double>& distance)
+{
+  int best = -1;
+  for(int i = 0; i < int(distance.size()); ++i)
+    if(distance[i] < std::numeric_limits<double>::infinity() && (best < 0 || distance[i] > distance[best]))
+      best = i;
+  return best;
+}
+
+/// Path from `to` back along `parent` to a source.
+inline Cut_path trace_path(int to, const std::vector<double>& distance, const std::vector<int>& parent,
+                           const std::vector<int>& parent_edge)
+{
+  Cut_path path;
+  path.length = distance[to];
+  for(int v = to; parent[v] >= 0; v = parent[v]) path.edges.push_back(parent_edge[v]);
+  return path;
+}
+
+inline Cut_path patch_cut_path(const Patch_graph& graph)
+{
+  std::vector<double> distance;
+  std::vector<int> parent, parent_edge;
+  std::vector<int> sources;
+  for(int i = 0; i < int(graph.vertex.size()); ++i)
+    if(graph.on_boundary[i]) sources.push_back(i);
+  if(sources.empty())
+  {
+    dijkstra(graph, {0}, distance, parent, parent_edge);
+    sources = {farthest(distance)};
+  }
+  dijkstra(graph, sources, distance, parent, parent_edge);
+  return trace_path(farthest(distance), distance, parent, parent_edge);
+}
+
+/// Boundary vertices of the cut mesh (on a border or cut edge).
+template <typename Surface>
+std::vector<char> cut_boundary_vertices(const Surface& surface, const std::vector<char>& is_cut)
+{
+  std::vector<char> on_boundary(surface.number_of_vertices(), 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < 0 || is_cut[surface.edge_of[fe]])
+      on_boundary[surface.edge_source(fe)] = on_boundary[surface.edge_target(fe)] = 1;
+  return on_boundary;
+}
+
+/// Faces with v < 1/2, grouped into patches connected across uncut edges.
+template <typename Surface>
+std::vector<std::vector<int>> low_v_patches(const Surface& surface, const std::vector<char>& is_cut,
+                                            const Eigen::VectorXd& v)
+{
+  const int n = int(surface.number_of_faces());
+  std::vector<int> patch_of(n, -1);
+  std::vector<std::vector<int>> patches;
+  for(int seed = 0; seed < n; ++seed)
+  {
+    if(patch_of[seed] >= 0 || !(v[seed] < 0.5)) continue;
+    patches.emplace_back();
+    std::vector<int> stack{seed};
+    patch_of[seed] = int(patches.size()) - 1;
+    while(!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      patches.back().push_back(f);
+      for(int k = 0; k < 3; ++k)
+      {
+        const int tw = surface.twin[3*f + k];
+        if(tw < 0 || is_cut[surface.edge_of[3*f + k]]) continue;
+        const int g = tw / 3;
+        if(patch_of[g] < 0 && v[g] < 0.5) { patch_of[g] = patch_of[f]; stack.push_back(g); }
+      }
+    }
+  }
+  return patches;
+}
+
+template <typename Surface>
+Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
+                        const std::vector<char>& on_boundary, const std::vector<int>& faces,
+                        std::vector<int>& local_index)
+{
+  Patch_graph graph;
+  auto local = [&](int v) {
+    if(local_index[v] < 0)
+    {
+      local_index[v] = int(graph.vertex.size());
+      graph.vertex.push_back(v);
+      graph.arcs.emplace_back();
+      graph.on_boundary.push_back(on_boundary[v]);
+    }
+    return local_index[v];
+  };
+  for(int f : faces)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int fe = 3*f + k, tw = surface.twin[fe];
+      // each edge once: from the face-edge with the larger index, or the only one
+      if(tw >= 0 && tw > fe && std::binary_search(faces.begin(), faces.end(), tw / 3)) continue;
+      const int e = surface.edge_of[fe];
+      const bool boundary_edge = tw < 0 || is_cut[e];
+      const double weight = boundary_edge ? 0. : surface.edge_length(fe);
+      const int a = local(surface.edge_source(fe)), b = local(surface.edge_target(fe));
+      graph.arcs[a].push_back({b, e, weight});
+      graph.arcs[b].push_back({a, e, weight});
+    }
+  for(int v : graph.vertex) local_index[v] = -1;
+  return graph;
+}
+
+/// Seam paths extracted from v; edges already cut are not repeated.
+template <typename Surface>
+std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vector<char>& is_cut,
+                                        const Eigen::VectorXd& v, double minimum_relative_length)
+{
+  const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
+  std::vector<int> local_index(surface.number_of_vertices(), -1);
+  std::vector<Cut_path> paths;
+  double longest = 0.;
+  for(std::vector<int>& faces : low_v_patches(surface, is_cut, v))
+  {
+    std::sort(faces.begin(), faces.end());
+    Cut_path path = patch_cut_path(patch_graph(surface, is_cut, on_boundary, faces, local_index));
+    path.edges.erase(std::remove_if(path.edges.begin(), path.edges.end(),
+                                    [&](int e) { return bool(is_cut[e]); }), path.edges.end());
+    if(path.edges.empty()) continue;
+    longest = (std::max)(longest, path.length);
+    paths.push_back(std::move(path));
+  }
+  paths.erase(std::remove_if(paths.begin(), paths.end(), [&](const Cut_path& p) {
+                return p.length < minimum_relative_length * longest; }), paths.end());
+  return paths;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,178 @@
+// The Ambrosio–Tortorelli alternation, cut extraction and final solve
+// (METHOD.md "Optimization" and "Cut extraction"), on index arrays.
+#ifndef CGAL_SMP_CUT_INTERNAL_JOINT_OPTIMIZATION_H
+#define CGAL_SMP_CUT_INTERNAL_JOINT_OPTIMIZATION_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/discontinuity_field.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+
+#include <functional>
+#include <string>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+struct Joint_progress
+{
+  const char* phase;
+  int pass, alternation, alternations_per_pass;
+  double epsilon, distortion;
+};
+
+struct Joint_settings
+{
+  double lambda = 1.;
+  double epsilon_start = 0.1;
+  double epsilon_end = 0.01;
+  int iterations_per_epsilon = 3;
+  double gamma = 1e-7;
+  int passes = 1;
+  double minimum_relative_cut_length = 0.2;
+  int max_newton_iterations = 500;
+  double alternation_tolerance = 1e-6; // Newton tolerance of the u-steps inside the alternation
+  double final_tolerance = 1e-9;       // of the final solve on the cut mesh
+  std::function<bool(const Joint_progress&)> progress; // false: cancel
+
+  bool valid() const
+  {
+    return lambda > 0. && epsilon_start > 0. && epsilon_end > 0. && epsilon_end <= epsilon_start
+        && iterations_per_epsilon >= 1 && gamma > 0. && passes >= 0 && max_newton_iterations >= 1
+        && minimum_relative_cut_length >= 0. && minimum_relative_cut_length <= 1.;
+  }
+
+  int alternations_per_pass() const
+  {
+    int n = 0;
+    for(double eps = epsilon_start; eps > epsilon_end; eps *= 0.5) n += iterations_per_epsilon;
+    return n;
+  }
+};
+
+/// The state of the cut mesh: which edges are cut, its chart mesh and UVs.
+struct Joint_state
+{
+  std::vector<char> is_cut;      // per surface edge
+  Chart_mesh chart;
+  std::vector<int> corner_uv;    // per surface corner
+  UV_vector x;
+  Eigen::VectorXd v;             // per face
+  std::size_t newton_iterations = 0;
+  double initial_distortion = 0.;
+};
+
+template <typename Surface>
+double mean_edge_length(const Surface& surface)
+{
+  double sum = 0.;
+  int n = 0;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < fe) { sum += surface.edge_length(fe); ++n; }
+  return n > 0 ? sum / n : 1.;
+}
+
+/// Cuts the edges of `paths`, rebuilds the chart mesh and carries the UVs
+/// over: both sides of a new cut start where the uncut vertex was.
+template <typename Surface>
+bool apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Joint_state& state)
+{
+  for(const Cut_path& path : paths)
+    for(int e : path.edges) state.is_cut[e] = 1;
+  const std::vector<int> old_corner_uv = state.corner_uv;
+  const UV_vector old_x = state.x;
+  if(!build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv)) return false;
+  state.x.resize(2 * state.chart.number_of_vertices);
+  for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
+    state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
+  return true;
+}
+
+inline std::vector<double> face_distortions(const Chart_mesh& chart, const UV_vector& x)
+{
+  std::vector<double> psi(chart.number_of_faces());
+  for(std::size_t f = 0; f < psi.size(); ++f) psi[f] = symmetric_dirichlet(chart.jacobian(x, f));
+  return psi;
+}
+
+/// One pass: the alternation at decreasing ε, then the cut paths from v.
+/// Returns OK, ERROR_CANNOT_SOLVE_LINEAR_SYSTEM or ERROR_CANCELED.
+template <typename Surface>
+Error_code alternate(const Surface& surface, const std::vector<double>& face_lambda,
+                     const Joint_settings& settings, int pass, Joint_state& state,
+                     std::vector<Cut_path>& paths)
+{
+  const std::size_t nf = surface.number_of_faces();
+  const double mean_edge = mean_edge_length(surface);
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(nf, 1.));
+  Discontinuity_solver v_solver(dual_edges(surface, state.is_cut, face_lambda), state.chart.area, face_lambda);
+  state.v = Eigen::VectorXd::Ones(nf);
+  int alternation = 0;
+  for(double eps = settings.epsilon_start; eps > settings.epsilon_end; eps *= 0.5)
+    for(int i = 0; i < settings.iterations_per_epsilon; ++i)
+    {
+      for(std::size_t f = 0; f < nf; ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
+      const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations,
+                                                      settings.alternation_tolerance);
+      state.newton_iterations += report.iterations;
+      if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      ++alternation;
+      if(settings.progress && !settings.progress({"alternate", pass, alternation, settings.alternations_per_pass(),
+                                                  eps, mean_distortion(state.chart, state.x)}))
+        return ERROR_CANCELED;
+    }
+  paths = extract_cut_paths(surface, state.is_cut, state.v, settings.minimum_relative_cut_length);
+  return OK;
+}
+
+/// The whole method from `state.is_cut` (the initial cut, which must leave
+/// every component a topological disk). Fills the rest of `state`.
+template <typename Surface>
+Error_code joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
+                              const Joint_settings& settings, Joint_state& state)
+{
+  if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  if(!build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv)) return ERROR_DEGENERATE_FACE;
+  const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
+  if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
+  if(embedding == Embedding_status::SOLVE_FAILED || number_of_flipped_faces(state.chart, state.x) > 0)
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  state.initial_distortion = mean_distortion(state.chart, state.x);
+  if(settings.progress && !settings.progress({"initialize", 0, 0, settings.alternations_per_pass(),
+                                              settings.epsilon_start, state.initial_distortion}))
+    return ERROR_CANCELED;
+
+  for(int pass = 0; pass < settings.passes; ++pass)
+  {
+    std::vector<Cut_path> paths;
+    const Error_code status = alternate(surface, face_lambda, settings, pass, state, paths);
+    if(status != OK) return status;
+    if(paths.empty()) break;
+    if(!apply_cuts(surface, paths, state)) return ERROR_DEGENERATE_FACE;
+    if(settings.progress && !settings.progress({"cut", pass, settings.alternations_per_pass(),
+                                                settings.alternations_per_pass(), settings.epsilon_end,
+                                                mean_distortion(state.chart, state.x)}))
+      return ERROR_CANCELED;
+  }
+
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(surface.number_of_faces(), 1.));
+  const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
+  state.newton_iterations += report.iterations;
+  if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),
+                                              settings.epsilon_end, mean_distortion(state.chart, state.x)}))
+    return ERROR_CANCELED;
+  return OK;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,54 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MAKE_SEAM_MESH_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_MAKE_SEAM_MESH_H
+
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Makes a seam edge map and a seam vertex map consistent with what
+/// `CGAL::Seam_mesh` expects: edges on the mesh's boundary are unflagged
+/// (CGAL ignores them as seams), and exactly the vertices of the remaining
+/// seam edges are flagged. Returns the number of seam edges.
+template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
+std::size_t normalize_seam_maps(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map,
+                                SeamVertexMap seam_vertex_map)
+{
+  for(auto v : vertices(mesh)) put(seam_vertex_map, v, false);
+  std::size_t n = 0;
+  for(auto e : edges(mesh))
+  {
+    if(!get(seam_edge_map, e)) continue;
+    if(is_border(e, mesh)) { put(seam_edge_map, e, false); continue; }
+    ++n;
+    put(seam_vertex_map, source(e, mesh), true);
+    put(seam_vertex_map, target(e, mesh), true);
+  }
+  return n;
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Builds the `CGAL::Seam_mesh` of `mesh` opened along the seams of
+/// `seam_edge_map` (e.g. as returned by `cut_and_parameterize()`), filling
+/// `seam_vertex_map` and setting the seam mesh's seam counter, which CGAL
+/// only updates through `add_seam()`. The UV map written by
+/// `cut_and_parameterize()` (keyed by halfedges of `mesh`) is then a valid
+/// vertex UV map of the seam mesh, for CGAL's parameterizers and I/O.
+template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
+CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>
+make_seam_mesh(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, SeamVertexMap seam_vertex_map)
+{
+  const std::size_t n = normalize_seam_maps(mesh, seam_edge_map, seam_vertex_map);
+  CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap> seam_mesh(mesh, seam_edge_map, seam_vertex_map);
+  seam_mesh.set_seam_edges_number(n);
+  return seam_mesh;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
