@@ -1,0 +1,430 @@
+// uv_unwrap: command-line front end of cut_and_parameterize(). Reads a
+// triangle mesh, cuts it and computes a UV map, writes an OBJ with texture
+// coordinates and, on request, a JSON file of statistics.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
+#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace fs = std::filesystem;
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point_2 = Kernel::Point_2;
+using Point_3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using halfedge_descriptor = Mesh::Halfedge_index;
+using edge_descriptor = Mesh::Edge_index;
+using face_descriptor = Mesh::Face_index;
+
+// Any failure the user should read about: main prints it as one line.
+struct Failure : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::string input;          // empty: the built-in default mesh
+  std::string output;         // empty: <input stem>_uv.obj in the current directory
+  std::string stats;
+  double lambda = 1.;
+  double epsilon_start = 0.1;
+  double epsilon_end = 0.01;
+  int iterations = 3;
+  int passes = 1;
+  bool quiet = false;
+};
+
+const char* const usage_text =
+  "usage: uv_unwrap [INPUT] [options]\n"
+  "\n"
+  "Cuts a triangle mesh (OBJ, OFF or PLY) along seams chosen jointly with a\n"
+  "low-distortion UV map (Ambrosio-Tortorelli method) and writes the result as\n"
+  "an OBJ with texture coordinates. Without INPUT, runs on a built-in mesh.\n"
+  "\n"
+  "options:\n"
+  "  -o, --output FILE       output OBJ (default: <input name>_uv.obj in the current directory)\n"
+  "  --stats FILE            write statistics as JSON\n"
+  "  --lambda X              seam cost, relative to the mean edge length (default 1)\n"
+  "  --epsilon-start X       first epsilon, relative to the mean edge length (default 0.1)\n"
+  "  --epsilon-end X         epsilon is halved while above this value (default 0.01)\n"
+  "  --iterations N          alternations per epsilon (default 3)\n"
+  "  --passes N              optimize-and-cut passes (default 1)\n"
+  "  -q, --quiet             print nothing but errors\n"
+  "  -h, --help              show this help\n";
+
+double parse_number(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double value = 0.;
+  try { value = std::stod(text, &used); } catch(const std::exception&) { used = 0; }
+  if(used == 0 || used != text.size() || !std::isfinite(value))
+    throw Failure("invalid value '" + text + "' for " + option + " (expected a number)");
+  return value;
+}
+
+int parse_count(const std::string& option, const std::string& text)
+{
+  const double value = parse_number(option, text);
+  if(value != std::floor(value) || value < 1. || value > 1e6)
+    throw Failure("invalid value '" + text + "' for " + option + " (expected a positive integer)");
+  return int(value);
+}
+
+// Returns false when the program should stop successfully (--help).
+bool parse_arguments(int argc, char** argv, Options& options)
+{
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for(std::size_t i = 0; i < args.size(); ++i)
+  {
+    std::string arg = args[i], value;
+    bool has_inline_value = false;
+    // Accept both "--name value" and "--name=value".
+    if(arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos)
+    {
+      value = arg.substr(arg.find('=') + 1);
+      arg = arg.substr(0, arg.find('='));
+      has_inline_value = true;
+    }
+    auto next_value = [&]() -> std::string {
+      if(has_inline_value) return value;
+      if(i + 1 >= args.size()) throw Failure("option " + arg + " needs a value");
+      return args[++i];
+    };
+
+    if(arg == "-h" || arg == "--help") { std::cout << usage_text; return false; }
+    else if(arg == "-q" || arg == "--quiet") options.quiet = true;
+    else if(arg == "-o" || arg == "--output") options.output = next_value();
+    else if(arg == "--stats") options.stats = next_value();
+    else if(arg == "--lambda") options.lambda = parse_number(arg, next_value());
+    else if(arg == "--epsilon-start") options.epsilon_start = parse_number(arg, next_value());
+    else if(arg == "--epsilon-end") options.epsilon_end = parse_number(arg, next_value());
+    else if(arg == "--iterations") options.iterations = parse_count(arg, next_value());
+    else if(arg == "--passes") options.passes = parse_count(arg, next_value());
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Failure("unknown option '" + arg + "' (see --help)");
+    else if(!options.input.empty())
+      throw Failure("more than one input file given ('" + options.input + "' and '" + arg + "')");
+    else
+      options.input = arg;
+  }
+  if(!(options.lambda > 0.)) throw Failure("--lambda must be positive");
+  if(!(options.epsilon_start > 0.) || !(options.epsilon_end > 0.))
+    throw Failure("--epsilon-start and --epsilon-end must be positive");
+  if(options.epsilon_end > options.epsilon_start)
+    throw Failure("--epsilon-end must not exceed --epsilon-start");
+  return true;
+}
+
+// ---------------------------------------------------------------- input
+
+// A spherical cap reaching 135 degrees from its pole: a disk curved enough
+// that it cannot be flattened without seams, used when no data mesh exists.
+void make_spherical_cap(Mesh& mesh)
+{
+  const int rings = 16, segments = 48;
+  const double max_polar_angle = 0.75 * M_PI;
+  std::vector<std::vector<Mesh::Vertex_index>> ring(rings);
+  const auto pole = mesh.add_vertex(Point_3(0., 0., 1.));
+  for(int k = 0; k < rings; ++k)
+  {
+    const double theta = max_polar_angle * (k + 1) / rings;
+    for(int j = 0; j < segments; ++j)
+    {
+      const double phi = 2. * M_PI * j / segments;
+      ring[k].push_back(mesh.add_vertex(Point_3(std::sin(theta) * std::cos(phi),
+                                                std::sin(theta) * std::sin(phi), std::cos(theta))));
+    }
+  }
+  for(int j = 0; j < segments; ++j)
+  {
+    const int j1 = (j + 1) % segments;
+    mesh.add_face(pole, ring[0][j], ring[0][j1]);
+    for(int k = 0; k + 1 < rings; ++k)
+    {
+      mesh.add_face(ring[k][j], ring[k + 1][j], ring[k + 1][j1]);
+      mesh.add_face(ring[k][j], ring[k + 1][j1], ring[k][j1]);
+    }
+  }
+}
+
+fs::path executable_directory(const char* argv0)
+{
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec); // Linux; argv[0] elsewhere
+  if(ec) exe = fs::absolute(argv0, ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
+// The default input: a disk-like mesh of CGAL's data set, looked up through
+// CGAL_DATA_DIR, then in the copy the setup scripts extract next to the
+// build's bin/ folder. Empty if neither exists.
+std::string find_default_mesh(const char* argv0)
+{
+  const char* const name = "meshes/nefertiti.off";
+  std::vector<fs::path> candidates;
+  if(const char* dir = std::getenv("CGAL_DATA_DIR"))
+    if(*dir) candidates.push_back(fs::path(dir) / name);
+  const fs::path exe_dir = executable_directory(argv0);
+  if(!exe_dir.empty()) candidates.push_back(exe_dir.parent_path() / "data" / name);
+  for(const fs::path& p : candidates)
+  {
+    std::error_code ec;
+    if(fs::is_regular_file(p, ec)) return p.string();
+  }
+  return {};
+}
+
+// CGAL's OFF and PLY readers reserve memory for the element counts of the
+// header before reading any element, so a corrupt header could make them
+// allocate gigabytes. Every element takes at least one byte of the file:
+// reject counts larger than the file.
+void check_header_counts(const std::string& filename, std::uintmax_t file_size)
+{
+  std::ifstream in(filename, std::ios::binary);
+  std::string keyword;
+  in >> keyword;
+  auto check = [&](double count) {
+    if(count > double(file_size))
+      throw Failure("cannot read '" + filename + "': its header announces " +
+                    std::to_string(std::uintmax_t(count)) + " elements in a file of " +
+                    std::to_string(file_size) + " bytes");
+  };
+  if(keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0)
+  {
+    std::string line;
+    std::getline(in, line);
+    if(line.find("BINARY") != std::string::npos) return;
+    // The counts follow, possibly after comment lines; nOFF puts the dimension first.
+    std::string token;
+    for(int read = 0; read < 3 && in >> token;)
+    {
+      if(token[0] == '#') { std::getline(in, line); continue; }
+      char* end = nullptr;
+      const double count = std::strtod(token.c_str(), &end);
+      if(end == token.c_str()) return; // malformed: the reader will say no
+      check(count);
+      ++read;
+    }
+  }
+  else if(keyword == "ply")
+  {
+    std::string line;
+    while(std::getline(in, line) && line.rfind("end_header", 0) != 0)
+    {
+      std::istringstream words(line);
+      std::string word, name;
+      double count = 0.;
+      if(words >> word && word == "element" && words >> name >> count) check(count);
+    }
+  }
+}
+
+void read_mesh(const std::string& filename, Mesh& mesh)
+{
+  std::error_code ec;
+  if(!fs::exists(filename, ec)) throw Failure("cannot open '" + filename + "': no such file");
+  if(!fs::is_regular_file(filename, ec)) throw Failure("cannot read '" + filename + "': not a regular file");
+  if(!std::ifstream(filename)) throw Failure("cannot open '" + filename + "': permission denied");
+  const std::uintmax_t size = fs::file_size(filename, ec);
+  if(ec || size == 0) throw Failure("'" + filename + "' is empty");
+  check_header_counts(filename, size);
+
+  // CGAL's reader picks the format from the extension and rejects
+  // non-manifold input.
+  if(!CGAL::IO::read_polygon_mesh(filename, mesh, CGAL::parameters::verbose(false)))
+    throw Failure("cannot read '" + filename +
+                  "': not a valid manifold polygon mesh in a supported format (.obj, .off, .ply)");
+  if(num_faces(mesh) == 0) throw Failure("'" + filename + "' has no faces");
+  if(!CGAL::is_triangle_mesh(mesh))
+    throw Failure("'" + filename + "' is not a triangle mesh; triangulate it first");
+}
+
+// ---------------------------------------------------------------- output
+
+std::string json_string(const std::string& s)
+{
+  std::ostringstream out;
+  out << '"';
+  for(unsigned char c : s)
+  {
+    if(c == '"' || c == '\\') out << '\\' << c;
+    else if(c < 0x20)
+    {
+      static const char* hex = "0123456789abcdef";
+      out << "\\u00" << hex[c >> 4] << hex[c & 15];
+    }
+    else out << c;
+  }
+  out << '"';
+  return out.str();
+}
+
+// JSON has no infinity or NaN: those become null.
+std::string json_number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+struct Run_summary
+{
+  std::string input;
+  std::size_t vertices = 0, faces = 0, flipped_faces = 0;
+  SMP::Cut_and_parameterize_result result;
+  double time_seconds = 0.;
+};
+
+void write_stats(const std::string& filename, const Run_summary& s)
+{
+  std::ofstream out(filename);
+  out << "{\n"
+      << "  \"input\": " << json_string(s.input) << ",\n"
+      << "  \"vertices\": " << s.vertices << ",\n"
+      << "  \"faces\": " << s.faces << ",\n"
+      << "  \"charts\": " << s.result.number_of_charts << ",\n"
+      << "  \"seam_edges\": " << s.result.number_of_seam_edges << ",\n"
+      << "  \"seam_length\": " << json_number(s.result.seam_length) << ",\n"
+      << "  \"distortion\": " << json_number(s.result.distortion) << ",\n"
+      << "  \"initial_distortion\": " << json_number(s.result.initial_distortion) << ",\n"
+      << "  \"flipped_faces\": " << s.flipped_faces << ",\n"
+      << "  \"time_seconds\": " << json_number(s.time_seconds) << ",\n"
+      << "  \"newton_iterations\": " << s.result.newton_iterations << ",\n"
+      << "  \"status\": " << json_string(SMP::error_name(s.result.error)) << "\n"
+      << "}\n";
+  out.close();
+  if(!out) throw Failure("cannot write '" + filename + "'");
+}
+
+// ---------------------------------------------------------------- run
+
+int run(int argc, char** argv)
+{
+  Options options;
+  if(!parse_arguments(argc, argv, options)) return EXIT_SUCCESS;
+
+  Mesh mesh;
+  std::string input_name = options.input, stem;
+  if(!options.input.empty())
+  {
+    read_mesh(options.input, mesh);
+    stem = fs::path(options.input).stem().string();
+  }
+  else if(std::string data_mesh = find_default_mesh(argv[0]); !data_mesh.empty())
+  {
+    read_mesh(data_mesh, mesh);
+    input_name = data_mesh;
+    stem = fs::path(data_mesh).stem().string();
+  }
+  else
+  {
+    make_spherical_cap(mesh);
+    input_name = "built-in spherical cap";
+    stem = "spherical_cap";
+  }
+  if(options.output.empty()) options.output = stem + "_uv.obj";
+  if(!options.quiet)
+    std::cout << "uv_unwrap: " << input_name << ": " << num_vertices(mesh) << " vertices, "
+              << num_faces(mesh) << " faces" << std::endl;
+
+  auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+
+  // Progress goes to stderr so that stdout keeps the summary only.
+  std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
+    [](const SMP::Cut_and_parameterize_progress& p) {
+      std::cerr << "  " << p.phase << ": pass " << p.pass + 1;
+      if(std::string(p.phase) == "alternate")
+        std::cerr << ", alternation " << p.alternation << "/" << p.alternations_per_pass
+                  << ", epsilon " << p.epsilon;
+      std::cerr << ", E_d " << p.distortion << std::endl;
+      return true;
+    };
+
+  namespace P = SMP::parameters;
+  const auto np = P::lambda(options.lambda,
+                  P::epsilon_start(options.epsilon_start,
+                  P::epsilon_end(options.epsilon_end,
+                  P::iterations_per_epsilon(options.iterations,
+                  P::number_of_passes(options.passes,
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))));
+
+  Run_summary summary;
+  summary.input = input_name;
+  summary.vertices = num_vertices(mesh);
+  summary.faces = num_faces(mesh);
+  const auto start = std::chrono::steady_clock::now();
+  summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
+  summary.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if(summary.result.ok()) summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
+
+  // Stats are written on failure too: the status says what went wrong.
+  if(!options.stats.empty()) write_stats(options.stats, summary);
+  if(!summary.result.ok())
+    throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
+                  SMP::error_name(summary.result.error) + ")");
+
+  if(!SMP::write_OBJ_with_uvs(options.output, mesh, uvmap))
+    throw Failure("cannot write '" + options.output + "'");
+
+  if(!options.quiet)
+  {
+    const auto& r = summary.result;
+    std::cout << "  charts " << r.number_of_charts << ", seam edges " << r.number_of_seam_edges
+              << ", seam length E_s " << r.seam_length << "\n"
+              << "  distortion E_d " << r.distortion << " (initial " << r.initial_distortion
+              << "), flipped faces " << summary.flipped_faces << "\n"
+              << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
+              << "  wrote " << options.output;
+    if(!options.stats.empty()) std::cout << " and " << options.stats;
+    std::cout << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const Failure& e)
+  {
+    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "uv_unwrap: error: out of memory" << std::endl;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+  }
+  return EXIT_FAILURE;
+}
