@@ -1,0 +1,63 @@
+// Preview images of a UV map: what a person looks at to judge an unwrap.
+//
+// Deliberately independent of CGAL: the caller copies its result into plain
+// arrays, so the writers compile fast and can be fed from any mesh type.
+//
+// All writers validate their input and return false (writing nothing) on
+// bad data: no faces, indices out of range, non-finite coordinates, array
+// sizes that do not match, or a file that cannot be written.
+#ifndef UV_PREVIEW_PREVIEW_H
+#define UV_PREVIEW_PREVIEW_H
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+struct Preview_mesh
+{
+  // Input (uncut) mesh: 3D positions and triangles.
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<int, 3>> faces;
+  // UV of each corner: corner_uv[f][k] belongs to vertex faces[f][k].
+  // Corners of one vertex differ across seams. Required (same size as faces).
+  std::vector<std::array<std::array<double, 2>, 3>> corner_uv;
+  // Seam edges as pairs of indices into points (order irrelevant).
+  std::vector<std::pair<int, int>> seam_edges;
+  // Per face sigma1^2 + sigma2^2 + sigma1^-2 + sigma2^-2 (4 = isometric).
+  // Optional: empty means faces are drawn in a neutral gray.
+  std::vector<double> face_distortion;
+  // Per face discontinuity field v in [0,1] (optional; needed by the PLY).
+  std::vector<double> face_v;
+};
+
+struct Preview_caption
+{
+  double distortion = 0;   // E_d
+  double seam_length = 0;  // E_s
+  double seconds = 0;      // negative: not shown
+  std::size_t faces = 0;
+  std::size_t charts = 0;
+  std::string name;
+};
+
+// UV layout fitted to the page: faces filled by distortion (viridis-like ramp
+// on a log scale, with a legend), chart outlines, seams on top, a caption.
+// Flipped UV triangles (non-positive signed area) are filled in magenta.
+bool write_uv_svg(const std::string& path, const Preview_mesh& mesh,
+                  const Preview_caption& caption);
+
+// Software-rendered view(s) of the 3D mesh with a checkerboard texture mapped
+// through corner_uv, Lambert-shaded with a headlight, seams drawn on top.
+// With two_views, the image holds a front view and the view from behind side
+// by side. The mesh is assumed y-up (OBJ convention).
+bool write_checker_png(const std::string& path, const Preview_mesh& mesh,
+                       int width = 1024, int height = 768, bool two_views = true);
+
+// ASCII PLY of the mesh with per-face colors from face_v (red: v=0, a cut
+// wants to go there; pale at the 0.5 threshold; blue: v=1) and a per-face
+// float property "v". Requires face_v.size() == faces.size().
+bool write_v_field_ply(const std::string& path, const Preview_mesh& mesh);
+
+#endif // UV_PREVIEW_PREVIEW_H
