@@ -89,7 +89,12 @@ inline Cut_path trace_path(int to, const std::vector<double>& distance, const st
   return path;
 }
 
-inline Cut_path patch_cut_path(const Patch_graph& graph)
+/// Cut tree of one patch, grown one branch at a time: each branch is the
+/// shortest path from the vertex farthest from the current sources (the cut
+/// mesh's boundary, then also the branches so far) back to them. Branches
+/// come out longest first; growth stops below `minimum_length`. A patch off
+/// the boundary starts from its diameter path (two Dijkstra sweeps).
+inline std::vector<Cut_path> patch_cut_tree(const Patch_graph& graph, double minimum_length, int max_branches)
 {
   std::vector<double> distance;
   std::vector<int> parent, parent_edge;
@@ -101,8 +106,16 @@ inline Cut_path patch_cut_path(const Patch_graph& graph)
     dijkstra(graph, {0}, distance, parent, parent_edge);
     sources = {farthest(distance)};
   }
-  dijkstra(graph, sources, distance, parent, parent_edge);
-  return trace_path(farthest(distance), distance, parent, parent_edge);
+  std::vector<Cut_path> branches;
+  while(int(branches.size()) < max_branches)
+  {
+    dijkstra(graph, sources, distance, parent, parent_edge);
+    const int tip = farthest(distance);
+    if(tip < 0 || !(distance[tip] > 0.) || distance[tip] < minimum_length) break;
+    for(int v = tip; parent[v] >= 0; v = parent[v]) sources.push_back(v);
+    branches.push_back(trace_path(tip, distance, parent, parent_edge));
+  }
+  return branches;
 }
 
 /// Boundary vertices of the cut mesh (on a border or cut edge).
@@ -180,27 +193,33 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
   return graph;
 }
 
-/// Seam paths extracted from v; edges already cut are not repeated.
+/// Seam paths extracted from v; edges already cut are not repeated. Paths
+/// shorter than `minimum_relative_length` times the longest are dropped.
 template <typename Surface>
 std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vector<char>& is_cut,
-                                        const Eigen::VectorXd& v, double minimum_relative_length)
+                                        const Eigen::VectorXd& v, double minimum_relative_length,
+                                        int max_branches_per_patch = 32)
 {
   const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
   std::vector<int> local_index(surface.number_of_vertices(), -1);
-  std::vector<Cut_path> paths;
+  std::vector<Patch_graph> graphs;
   double longest = 0.;
   for(std::vector<int>& faces : low_v_patches(surface, is_cut, v))
   {
     std::sort(faces.begin(), faces.end());
-    Cut_path path = patch_cut_path(patch_graph(surface, is_cut, on_boundary, faces, local_index));
-    path.edges.erase(std::remove_if(path.edges.begin(), path.edges.end(),
-                                    [&](int e) { return bool(is_cut[e]); }), path.edges.end());
-    if(path.edges.empty()) continue;
-    longest = (std::max)(longest, path.length);
-    paths.push_back(std::move(path));
+    graphs.push_back(patch_graph(surface, is_cut, on_boundary, faces, local_index));
+    const std::vector<Cut_path> first = patch_cut_tree(graphs.back(), 0., 1);
+    if(!first.empty()) longest = (std::max)(longest, first.front().length);
   }
-  paths.erase(std::remove_if(paths.begin(), paths.end(), [&](const Cut_path& p) {
-                return p.length < minimum_relative_length * longest; }), paths.end());
+  std::vector<Cut_path> paths;
+  const double minimum_length = (std::max)(minimum_relative_length * longest, 1e-300);
+  for(const Patch_graph& graph : graphs)
+    for(Cut_path& path : patch_cut_tree(graph, minimum_length, max_branches_per_patch))
+    {
+      path.edges.erase(std::remove_if(path.edges.begin(), path.edges.end(),
+                                      [&](int e) { return bool(is_cut[e]); }), path.edges.end());
+      if(!path.edges.empty()) paths.push_back(std::move(path));
+    }
   return paths;
 }
 
