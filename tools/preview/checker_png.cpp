@@ -3,6 +3,7 @@
 #include "preview_detail.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
@@ -49,19 +50,28 @@ struct Camera
   }
 };
 
-// Looks at the bounding sphere from azimuth/elevation (degrees, y up, azimuth
-// 0 = looking down -z), then zooms so the projected mesh fills the viewport.
-Camera make_camera(const std::vector<V3>& used, V3 center, double radius, double azimuth,
-                   double elevation, double vx0, double vw, double vh)
+// Looks at the bounding sphere from the camera's azimuth/elevation (plus
+// `turn` degrees of azimuth), then zooms so the projected mesh fills the
+// viewport.
+Camera make_camera(const std::vector<V3>& used, V3 center, double radius, const Preview_camera& view,
+                   double turn, double vx0, double vw, double vh)
 {
   const double pi = 3.14159265358979323846;
-  const double az = azimuth * pi / 180, el = elevation * pi / 180;
-  const V3 to_eye{std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
+  const double az = (view.azimuth + turn) * pi / 180, el = view.elevation * pi / 180;
+  const V3 up = normalized(to_v3(view.up));
+  V3 front = to_v3(view.front);
+  front = normalized(front - dot(front, up) * up);
+  if(dot(front, front) == 0) // front parallel to up: any perpendicular will do
+    front = normalized(std::abs(up.x) < 0.9 ? cross(up, V3{1, 0, 0}) : cross(up, V3{0, 1, 0}));
+  const V3 side = cross(up, front);
+  const V3 to_eye = std::cos(el) * (std::cos(az) * front + std::sin(az) * side) + std::sin(el) * up;
   const double half_fov = 15 * pi / 180;
   Camera c;
   c.eye = center + (radius / std::sin(half_fov)) * to_eye;
   c.fwd = -1 * to_eye;
-  c.right = normalized(cross(c.fwd, V3{0, 1, 0}));
+  c.right = normalized(cross(c.fwd, up));
+  if(dot(c.right, c.right) == 0) // looking straight down the up axis
+    c.right = normalized(cross(c.fwd, front));
   c.up = cross(c.right, c.fwd);
 
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
@@ -220,9 +230,43 @@ void draw_seams(const Scene& s, const Camera& cam, int x0, int x1, Frame& fr)
 
 } // namespace
 
+bool preview_camera_for_up_axis(const std::string& axis, Preview_camera& camera)
+{
+  std::string a;
+  for(char ch : axis)
+    a += char(std::tolower(static_cast<unsigned char>(ch)));
+  double sign = 1;
+  if(!a.empty() && (a[0] == '+' || a[0] == '-'))
+  {
+    sign = a[0] == '-' ? -1 : 1;
+    a.erase(0, 1);
+  }
+  if(a != "x" && a != "y" && a != "z")
+    return false;
+  Preview_camera c = camera;
+  const int k = a[0] - 'x';
+  c.up = {0, 0, 0};
+  c.up[std::size_t(k)] = sign;
+  c.front = k == 2 ? std::array<double, 3>{0, -1, 0} : std::array<double, 3>{0, 0, 1};
+  camera = c;
+  return true;
+}
+
 bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views)
 {
+  return write_checker_png(path, mesh, width, height, two_views, Preview_camera());
+}
+
+bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
+                       const Preview_camera& camera)
+{
   if(!valid_mesh(mesh, true))
+    return false;
+  for(double x : {camera.up[0], camera.up[1], camera.up[2], camera.front[0], camera.front[1], camera.front[2],
+                  camera.azimuth, camera.elevation})
+    if(!std::isfinite(x))
+      return false;
+  if(!(dot(to_v3(camera.up), to_v3(camera.up)) > 0))
     return false;
   if(width < 16 || height < 16 || width > 16384 || height > 16384)
     return false;
@@ -270,12 +314,12 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
               {ub.lo[0], ub.lo[1]},
               uv_extent / 24, // ~24 squares across the layout
               0.012 * radius,
-              ss * std::max(1.0, 0.0028 * std::min(width / views, height))};
+              ss * std::max(1.0, 0.0036 * std::min(width / views, height))};
   for(int v = 0; v < views; ++v)
   {
     const int x0 = v * fr.w / views, x1 = (v + 1) * fr.w / views;
-    // Front-ish and slightly above; the second view looks from behind.
-    const Camera cam = make_camera(used, center, radius, 30.0 + 180.0 * v, 20.0, x0, x1 - x0, fr.h);
+    // The second view looks from the opposite side.
+    const Camera cam = make_camera(used, center, radius, camera, 180.0 * v, x0, x1 - x0, fr.h);
     draw_faces(scene, cam, x0, x1, fr);
     draw_seams(scene, cam, x0, x1, fr);
   }

@@ -48,12 +48,31 @@ struct Preview_caption
 bool write_uv_svg(const std::string& path, const Preview_mesh& mesh,
                   const Preview_caption& caption);
 
+// Where the checker preview looks from. Directions are in mesh coordinates
+// and need not be unit or exactly perpendicular.
+struct Preview_camera
+{
+  std::array<double, 3> up{0, 1, 0};    // shown pointing up on screen
+  std::array<double, 3> front{0, 0, 1}; // side of the mesh the first view faces
+  double azimuth = 30;                  // degrees, turning from front around up
+  double elevation = 20;                // degrees above the horizontal plane
+};
+
+// Camera for a mesh whose up axis is "x", "y", "z", "+z", "-y", ... (case
+// insensitive). Front is +z for x- or y-up meshes and -y for z-up meshes
+// (the usual z-up convention: the front view looks along +y).
+// Returns false, leaving `camera` alone, for any other text.
+bool preview_camera_for_up_axis(const std::string& axis, Preview_camera& camera);
+
 // Software-rendered view(s) of the 3D mesh with a checkerboard texture mapped
 // through corner_uv, Lambert-shaded with a headlight, seams drawn on top.
-// With two_views, the image holds a front view and the view from behind side
-// by side. The mesh is assumed y-up (OBJ convention).
+// With two_views, the image holds the camera's view and the view from the
+// opposite side, side by side. Without a camera the mesh is taken as y-up
+// (the OBJ convention).
 bool write_checker_png(const std::string& path, const Preview_mesh& mesh,
                        int width = 1024, int height = 768, bool two_views = true);
+bool write_checker_png(const std::string& path, const Preview_mesh& mesh,
+                       int width, int height, bool two_views, const Preview_camera& camera);
 
 // ASCII PLY of the mesh with per-face colors from face_v (red: v=0, a cut
 // wants to go there; pale at the 0.5 threshold; blue: v=1) and a per-face

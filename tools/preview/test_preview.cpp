@@ -2,7 +2,8 @@
 // relies on: the files parse, carry the right counts, and show something.
 //
 //   test_preview OUT_DIR            synthetic mesh + bad-input checks
-//   test_preview OUT_DIR MESH.obj   also a real mesh with a cylindrical UV
+//   test_preview OUT_DIR MESH.obj [UP]   a real mesh instead: its own UVs
+//       (f v/vt), else a cylindrical projection; UP is its up axis (x, y, z, -z...)
 #include "preview.h"
 #include "preview_detail.h"
 
@@ -345,13 +346,16 @@ static void check_bad_inputs(const fs::path& dir, const Preview_mesh& good)
   CHECK(!write_v_field_ply(missing.string() + ".ply", good));
 }
 
-// Minimal OBJ reader: positions and faces (polygons fanned), ignoring the
-// rest of the format.
+// Minimal OBJ reader: positions, texture coordinates and faces (polygons
+// fanned). Corner UVs are taken from "f v/vt" when every face has them.
 static bool read_obj(const std::string& file, Preview_mesh& m)
 {
   std::ifstream in(file);
   if(!in)
     return false;
+  std::vector<std::array<double, 2>> vt;
+  std::vector<std::array<int, 3>> face_vt;
+  bool all_vt = true;
   std::string line;
   while(std::getline(in, line))
   {
@@ -364,24 +368,50 @@ static bool read_obj(const std::string& file, Preview_mesh& m)
       ss >> p[0] >> p[1] >> p[2];
       m.points.push_back(p);
     }
+    else if(tag == "vt")
+    {
+      std::array<double, 2> t{};
+      ss >> t[0] >> t[1];
+      vt.push_back(t);
+    }
     else if(tag == "f")
     {
-      std::vector<int> ids;
+      std::vector<int> ids, tids;
       std::string tok;
       while(ss >> tok)
       {
-        const int i = std::stoi(tok.substr(0, tok.find('/')));
+        const int i = std::stoi(tok);
         ids.push_back(i < 0 ? int(m.points.size()) + i : i - 1);
+        const std::size_t slash = tok.find('/');
+        if(slash != std::string::npos && slash + 1 < tok.size() && tok[slash + 1] != '/')
+        {
+          const int t = std::stoi(tok.substr(slash + 1));
+          tids.push_back(t < 0 ? int(vt.size()) + t : t - 1);
+        }
       }
+      all_vt = all_vt && tids.size() == ids.size();
       for(std::size_t k = 1; k + 1 < ids.size(); ++k)
+      {
         m.faces.push_back({ids[0], ids[k], ids[k + 1]});
+        if(all_vt)
+          face_vt.push_back({tids[0], tids[k], tids[k + 1]});
+      }
     }
   }
+  if(all_vt && face_vt.size() == m.faces.size())
+    for(const auto& t : face_vt)
+    {
+      std::array<std::array<double, 2>, 3> uv{};
+      for(std::size_t k = 0; k < 3; ++k)
+        if(t[k] >= 0 && std::size_t(t[k]) < vt.size())
+          uv[k] = vt[std::size_t(t[k])];
+      m.corner_uv.push_back(uv);
+    }
   return !m.faces.empty();
 }
 
 // Cylindrical UV around the longest bounding-box axis, cut where the angle
-// wraps: a simple real-mesh map with a real seam and real distortion.
+// wraps: a crude real-mesh map with a real seam, stretch and flips.
 static void cylindrical_uv(Preview_mesh& m)
 {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
@@ -420,7 +450,25 @@ static void cylindrical_uv(Preview_mesh& m)
       uv[std::size_t(k)] = {mean_r * th[std::size_t(k)], m.points[std::size_t(t[k])][std::size_t(axis)]};
     m.corner_uv.push_back(uv);
   }
-  // Seams: interior edges whose two faces disagree on the UVs.
+}
+
+static double face_area(const Preview_mesh& m, std::size_t f)
+{
+  const auto& t = m.faces[f];
+  double e1[3], e2[3];
+  for(std::size_t k = 0; k < 3; ++k)
+  {
+    e1[k] = m.points[std::size_t(t[1])][k] - m.points[std::size_t(t[0])][k];
+    e2[k] = m.points[std::size_t(t[2])][k] - m.points[std::size_t(t[0])][k];
+  }
+  return 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) + std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
+                         std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
+}
+
+// Fills seams (interior edges whose two faces disagree on the UVs),
+// distortion, a stand-in v field and the caption metrics from the UVs.
+static void derive_from_uv(Preview_mesh& m, Preview_caption& cap)
+{
   std::map<std::pair<int, int>, std::vector<std::array<double, 4>>> sides;
   for(std::size_t f = 0; f < m.faces.size(); ++f)
     for(int k = 0; k < 3; ++k)
@@ -434,18 +482,28 @@ static void cylindrical_uv(Preview_mesh& m)
       }
       sides[{a, b}].push_back({ua[0], ua[1], ub[0], ub[1]});
     }
+  double seam_len = 0, area = 0, area_d = 0;
   for(const auto& e : sides)
     if(e.second.size() == 2 && e.second[0] != e.second[1])
+    {
       m.seam_edges.push_back(e.first);
-  m.face_distortion.clear();
-  m.face_v.clear();
+      const auto& p = m.points[std::size_t(e.first.first)];
+      const auto& q = m.points[std::size_t(e.first.second)];
+      seam_len += std::sqrt(std::pow(p[0] - q[0], 2) + std::pow(p[1] - q[1], 2) + std::pow(p[2] - q[2], 2));
+    }
   for(std::size_t f = 0; f < m.faces.size(); ++f)
   {
-    const double d = face_distortion(m, f);
+    const double d = face_distortion(m, f), a = face_area(m, f);
     m.face_distortion.push_back(d);
-    // A stand-in v field: small where the map stretches.
-    m.face_v.push_back(std::isfinite(d) ? std::clamp(1.5 - 0.25 * std::log2(d / 4) * 2, 0.0, 1.0) : 0.0);
+    // A stand-in v field: low where the map stretches.
+    m.face_v.push_back(std::isfinite(d) ? std::clamp(1.5 - 0.5 * std::log2(d / 4), 0.0, 1.0) : 0.0);
+    area += a;
+    if(std::isfinite(d))
+      area_d += a * d;
   }
+  cap.faces = m.faces.size();
+  cap.distortion = area_d / area;
+  cap.seam_length = seam_len / std::sqrt(area / pi);
 }
 
 int main(int argc, char** argv)
@@ -461,39 +519,24 @@ int main(int argc, char** argv)
     CHECK(read_obj(argv[2], m));
     if(m.faces.empty())
       return 1;
-    cylindrical_uv(m);
+    const bool has_uv = !m.corner_uv.empty();
+    if(!has_uv)
+      cylindrical_uv(m);
     const std::string stem = fs::path(argv[2]).stem().string();
     Preview_caption cap;
-    cap.name = stem + " (cylindrical projection)";
-    cap.faces = m.faces.size();
+    cap.name = stem + (has_uv ? "" : " (cylindrical projection)");
     cap.charts = 1;
     cap.seconds = -1;
-    // E_d: area-weighted mean over faces with a finite value.
-    double area_d = 0, area = 0;
-    for(std::size_t f = 0; f < m.faces.size(); ++f)
-    {
-      const auto& t = m.faces[f];
-      double e1[3], e2[3];
-      for(std::size_t k = 0; k < 3; ++k)
-      {
-        e1[k] = m.points[std::size_t(t[1])][k] - m.points[std::size_t(t[0])][k];
-        e2[k] = m.points[std::size_t(t[2])][k] - m.points[std::size_t(t[0])][k];
-      }
-      const double a = 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
-                                       std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
-                                       std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
-      if(std::isfinite(m.face_distortion[f]))
-      {
-        area_d += a * m.face_distortion[f];
-        area += a;
-      }
-    }
-    cap.distortion = area_d / area;
+    derive_from_uv(m, cap);
     CHECK(write_uv_svg((dir / (stem + "_uv.svg")).string(), m, cap));
-    CHECK(write_checker_png((dir / (stem + "_checker.png")).string(), m));
+    Preview_camera camera;
+    if(argc > 3)
+      CHECK(preview_camera_for_up_axis(argv[3], camera));
+    CHECK(write_checker_png((dir / (stem + "_checker.png")).string(), m, 1024, 768, true, camera));
     CHECK(write_v_field_ply((dir / (stem + "_v.ply")).string(), m));
     check_svg(dir / (stem + "_uv.svg"), m, 0, 0);
-    check_png(dir / (stem + "_checker.png"), 1024, 768, !m.seam_edges.empty());
+    // Seams may all be hidden from both views of a real mesh.
+    check_png(dir / (stem + "_checker.png"), 1024, 768, false);
     check_ply(dir / (stem + "_v.ply"), m);
   }
   else
@@ -519,6 +562,28 @@ int main(int argc, char** argv)
     check_png(dir / "disk_checker.png", 1024, 768, true);
     check_png(dir / "disk_checker_single.png", 400, 300, true);
     check_ply(dir / "disk_v.ply", m);
+
+    // Camera choice: a top view of the disk (z up, looking down) differs from
+    // the default y-up view.
+    Preview_camera top;
+    CHECK(preview_camera_for_up_axis("+Z", top));
+    CHECK(top.up[2] == 1 && top.front[1] == -1);
+    CHECK(preview_camera_for_up_axis("-x", top));
+    CHECK(top.up[0] == -1);
+    CHECK(!preview_camera_for_up_axis("w", top));
+    CHECK(!preview_camera_for_up_axis("", top));
+    CHECK(top.up[0] == -1); // untouched by the failures
+    CHECK(preview_camera_for_up_axis("z", top));
+    top.elevation = 70;
+    CHECK(write_checker_png((dir / "disk_checker_top.png").string(), m, 640, 480, true, top));
+    check_png(dir / "disk_checker_top.png", 640, 480, true);
+    CHECK(slurp(dir / "disk_checker_top.png") != slurp(dir / "disk_checker.png"));
+    Preview_camera broken;
+    broken.up = {0, 0, 0};
+    CHECK(!write_checker_png((dir / "bad.png").string(), m, 640, 480, true, broken));
+    broken = Preview_camera();
+    broken.azimuth = std::numeric_limits<double>::quiet_NaN();
+    CHECK(!write_checker_png((dir / "bad.png").string(), m, 640, 480, true, broken));
 
     // Without distortion data the layout is still drawn, in gray.
     Preview_mesh plain = m;
