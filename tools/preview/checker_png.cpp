@@ -272,7 +272,7 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
     return false;
   const Box2 ub = uv_bounds(mesh);
   const double uv_extent = std::max(ub.hi[0] - ub.lo[0], ub.hi[1] - ub.lo[1]);
-  if(!(uv_extent > 0))
+  if(!(uv_extent > 0) || !std::isfinite(uv_extent))
     return false;
 
   // Geometry actually referenced by faces: bounds and smooth normals.
@@ -302,7 +302,7 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
   }
   const V3 center = 0.5 * (lo + hi);
   const double radius = 0.5 * std::sqrt(dot(hi - lo, hi - lo));
-  if(!(radius > 0))
+  if(!(radius > 0) || !std::isfinite(radius))
     return false;
 
   // 2x2 supersampling: cheap antialiasing for edges, checker and seams.

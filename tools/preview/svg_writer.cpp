@@ -120,7 +120,8 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
     return false;
   const Box2 box = uv_bounds(mesh);
   const double du = box.hi[0] - box.lo[0], dv = box.hi[1] - box.lo[1];
-  if(!(std::max(du, dv) > 0))
+  // Also rejects extents that overflow or scale to non-finite page units.
+  if(!(std::max(du, dv) > 0) || !std::isfinite(du) || !std::isfinite(dv) || !std::isfinite(740 / std::max(du, dv)))
     return false;
 
   // Page geometry (SVG user units ~ pixels).

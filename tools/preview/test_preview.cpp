@@ -330,6 +330,23 @@ static void check_bad_inputs(const fs::path& dir, const Preview_mesh& good)
   CHECK(!write_uv_svg(svg.string(), flat_uv, cap));
   CHECK(!write_checker_png(png.string(), flat_uv));
 
+  Preview_mesh huge_uv = good; // extent overflows to infinity
+  huge_uv.corner_uv[0][0] = {-1e308, 0};
+  huge_uv.corner_uv[1][0] = {1e308, 0};
+  CHECK(!write_uv_svg(svg.string(), huge_uv, cap));
+  CHECK(!write_checker_png(png.string(), huge_uv));
+
+  Preview_mesh tiny_uv = good; // extent too small to scale to the page
+  for(auto& f : tiny_uv.corner_uv)
+    for(auto& uv : f)
+      uv = {uv[0] * 1e-310, uv[1] * 1e-310};
+  CHECK(!write_uv_svg(svg.string(), tiny_uv, cap));
+
+  Preview_mesh huge_mesh = good;
+  huge_mesh.points[0] = {-1e308, 0, 0};
+  huge_mesh.points[1] = {1e308, 0, 0};
+  CHECK(!write_checker_png(png.string(), huge_mesh));
+
   Preview_mesh point_mesh = good; // all vertices coincide
   for(auto& p : point_mesh.points)
     p = {1, 1, 1};
