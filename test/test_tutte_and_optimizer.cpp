@@ -1,0 +1,326 @@
+// Tutte initialization (internal tutte_embedding) and the distortion
+// optimizer (symmetric_dirichlet_parameterize, internal Distortion_minimizer)
+// on generated disks: no flipped face ever, energy strictly below Tutte's,
+// developable patches reach E_d = 4, results do not depend on the scale.
+#include "generators.h"
+
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+
+#include <map>
+#include <set>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace ic = CGAL::Surface_mesh_parameterization::internal::cut;
+using namespace cut_test;
+
+namespace {
+
+struct Named_soup
+{
+  const char* name;
+  Soup soup;
+};
+
+/// The generated disks every test runs on.
+std::vector<Named_soup> disks()
+{
+  return {{"grid", grid_soup(10, 8, 1.5, 1.)},
+          {"hemisphere", hemisphere_soup(7, 20)},
+          {"wavy disk", wavy_disk_soup(8, 22, 5)},
+          {"cone", cone_soup(6, 16, 1., 1.5)},
+          {"cylinder patch", cylinder_patch_soup(10, 6, 1., 2., 1.5)}};
+}
+
+template <typename Mesh>
+struct Chart
+{
+  ic::Indexed_surface<Mesh> surface;
+  ic::Chart_mesh mesh;
+  std::vector<int> corner_uv;
+};
+
+/// The uncut chart mesh of `mesh`; REQUIREs success.
+template <typename Mesh>
+void make_chart(const Mesh& mesh, Chart<Mesh>& chart)
+{
+  REQUIRE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
+  REQUIRE(ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh,
+                               chart.corner_uv));
+}
+
+double signed_area(const ic::Chart_mesh& mesh, const ic::UV_vector& x, std::size_t f)
+{
+  return 0.5 * mesh.uv_edges(x, f).determinant();
+}
+
+template <typename Mesh>
+auto vertex_uv_map(const Mesh& mesh)
+{
+  return get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+}
+
+} // namespace
+
+CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
+{
+  for(const Named_soup& disk : disks())
+  {
+    Scoped_context ctx(disk.name);
+    TestType mesh;
+    build_mesh(disk.soup, mesh);
+    Chart<TestType> chart;
+    make_chart(mesh, chart);
+    const auto loops = ic::boundary_loops(chart.mesh);
+    REQUIRE_EQ(loops.size(), std::size_t(1));
+    // the loop pinned on the circle of the mesh's area, centered off the origin
+    const double radius = std::sqrt(chart.mesh.total_area() / pi);
+    ic::Pinned_loop pinned;
+    pinned.vertices = loops.front();
+    pinned.radius = radius;
+    pinned.center = ic::Vector2(0.3, -2.);
+    ic::UV_vector x;
+    REQUIRE(ic::tutte_embedding(chart.mesh, {pinned}, x));
+    REQUIRE(x.allFinite());
+    CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+    double min_area = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < chart.mesh.number_of_faces(); ++f)
+      min_area = (std::min)(min_area, signed_area(chart.mesh, x, f));
+    CHECK(min_area > 0.);
+
+    // the border sits on the circle, counterclockwise
+    const auto& loop = loops.front();
+    double polygon_area = 0.;
+    for(std::size_t i = 0; i < loop.size(); ++i)
+    {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      CHECK_NEAR(std::hypot(x[2 * a] - 0.3, x[2 * a + 1] + 2.), radius, 1e-12 * radius);
+      polygon_area += 0.5 * (x[2 * a] * x[2 * b + 1] - x[2 * b] * x[2 * a + 1]);
+    }
+    CHECK(polygon_area > 0.);
+    // flip-free and a disk: the faces tile the border polygon exactly
+    double uv_area = 0.;
+    for(std::size_t f = 0; f < chart.mesh.number_of_faces(); ++f) uv_area += signed_area(chart.mesh, x, f);
+    CHECK_REL(uv_area, polygon_area, 1e-12);
+
+    // uniform Tutte: every interior vertex is the mean of its neighbors
+    std::map<int, std::set<int>> neighbors;
+    for(const auto& t : chart.mesh.faces)
+      for(int k = 0; k < 3; ++k)
+      {
+        neighbors[t[k]].insert(t[(k + 1) % 3]);
+        neighbors[t[(k + 1) % 3]].insert(t[k]);
+      }
+    const std::set<int> border(loop.begin(), loop.end());
+    int interior = 0;
+    for(const auto& entry : neighbors)
+    {
+      if(border.count(entry.first)) continue;
+      ++interior;
+      double mx = 0., my = 0.;
+      for(int n : entry.second)
+      {
+        mx += x[2 * n];
+        my += x[2 * n + 1];
+      }
+      mx /= double(entry.second.size());
+      my /= double(entry.second.size());
+      CHECK_NEAR(x[2 * entry.first], mx, 1e-10 * radius);
+      CHECK_NEAR(x[2 * entry.first + 1], my, 1e-10 * radius);
+    }
+    CHECK(interior > 0);
+  }
+}
+
+CUT_TYPED_TEST(disk_charts_embedding_separates_components, Mesh_types)
+{
+  // three disks of different sizes: each on its own circle, no flip, no overlap
+  Soup soup = grid_soup(4, 4, 1., 1.);
+  soup.append(hemisphere_soup(4, 12, 2.).translate(5., 0., 0.));
+  soup.append(wavy_disk_soup(4, 12, 2).scale(0.5).translate(-5., 0., 0.));
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Chart<TestType> chart;
+  make_chart(mesh, chart);
+  int number_of_charts = 0;
+  const std::vector<int> chart_of_face = ic::chart_of_faces(chart.mesh, number_of_charts);
+  REQUIRE_EQ(number_of_charts, 3);
+  ic::UV_vector x;
+  REQUIRE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
+  CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+  // UV bounding boxes of the charts are disjoint, and each chart's UV area is
+  // at most its 3D area (a polygon inscribed in the circle of that area)
+  std::vector<std::array<double, 4>> box(3, {1e300, -1e300, 1e300, -1e300});
+  std::vector<double> uv_area(3, 0.), area(3, 0.);
+  for(std::size_t f = 0; f < chart.mesh.number_of_faces(); ++f)
+  {
+    const int c = chart_of_face[f];
+    uv_area[c] += signed_area(chart.mesh, x, f);
+    area[c] += chart.mesh.area[f];
+    for(int v : chart.mesh.faces[f])
+    {
+      box[c][0] = (std::min)(box[c][0], x[2 * v]);
+      box[c][1] = (std::max)(box[c][1], x[2 * v]);
+      box[c][2] = (std::min)(box[c][2], x[2 * v + 1]);
+      box[c][3] = (std::max)(box[c][3], x[2 * v + 1]);
+    }
+  }
+  for(int a = 0; a < 3; ++a)
+  {
+    CHECK(uv_area[a] > 0.5 * area[a]);
+    CHECK(uv_area[a] <= area[a] * (1. + 1e-12));
+    for(int b = a + 1; b < 3; ++b)
+    {
+      const bool apart = box[a][1] < box[b][0] || box[b][1] < box[a][0] || box[a][3] < box[b][2]
+                         || box[b][3] < box[a][2];
+      CHECK_MSG(apart, "charts " << a << " and " << b << " overlap in UV");
+    }
+  }
+  // a chart with a hole is not a disk
+  Chart<TestType> holed;
+  TestType holed_mesh;
+  build_mesh(disk_with_holes_soup(5, 1), holed_mesh);
+  make_chart(holed_mesh, holed);
+  CHECK(ic::disk_charts_embedding(holed.mesh, x) == ic::Embedding_status::NOT_DISKS);
+}
+
+CUT_TYPED_TEST(optimizer_lowers_the_energy_below_tutte_without_flips, Mesh_types)
+{
+  for(const Named_soup& disk : disks())
+  {
+    Scoped_context ctx(disk.name);
+    TestType mesh;
+    build_mesh(disk.soup, mesh);
+    auto tutte_uv = vertex_uv_map(mesh);
+    // no Newton iteration: the Tutte embedding itself
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, tutte_uv, CGAL::parameters::number_of_iterations(0)),
+               SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, tutte_uv), std::size_t(0));
+    const double tutte_energy = SMP::distortion_energy(mesh, tutte_uv);
+    CHECK(std::isfinite(tutte_energy));
+
+    auto uv = vertex_uv_map(mesh);
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    const double energy = SMP::distortion_energy(mesh, uv);
+    CHECK(std::isfinite(energy));
+    CHECK(energy >= 4.);
+    CHECK_MSG(energy < tutte_energy, "optimized " << energy << " vs Tutte " << tutte_energy);
+    for(auto v : vertices(mesh)) CHECK(std::isfinite(get(uv, v).x()) && std::isfinite(get(uv, v).y()));
+
+    // restarting from the optimum keeps it (no flip, no increase)
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)),
+               SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    CHECK(SMP::distortion_energy(mesh, uv) <= energy * (1. + 1e-12));
+  }
+}
+
+CUT_TYPED_TEST(every_newton_iteration_is_flip_free_and_decreasing, Mesh_types)
+{
+  for(const Named_soup& disk : disks())
+  {
+    Scoped_context ctx(disk.name);
+    TestType mesh;
+    build_mesh(disk.soup, mesh);
+    Chart<TestType> chart;
+    make_chart(mesh, chart);
+    const auto loops = ic::boundary_loops(chart.mesh);
+    REQUIRE_EQ(loops.size(), std::size_t(1));
+    ic::UV_vector x;
+    REQUIRE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
+    ic::Distortion_minimizer minimizer(chart.mesh, std::vector<double>(chart.mesh.number_of_faces(), 1.));
+    double previous = ic::mean_distortion(chart.mesh, x);
+    const double tutte = previous;
+    bool converged = false;
+    for(int iteration = 0; iteration < 100 && !converged; ++iteration)
+    {
+      const ic::Newton_report report = minimizer.minimize(x, 1, 1e-9);
+      REQUIRE(report.ok());
+      CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+      const double e = ic::mean_distortion(chart.mesh, x);
+      CHECK_MSG(e <= previous, "iteration " << iteration << ": " << e << " > " << previous);
+      CHECK(report.energy <= report.initial_energy);
+      previous = e;
+      converged = report.status == ic::Newton_status::CONVERGED;
+    }
+    CHECK(converged);
+    CHECK(previous < tutte);
+  }
+}
+
+CUT_TYPED_TEST(tiny_and_zero_weights_still_never_flip, Mesh_types)
+{
+  // Weights w_f >= 0 are allowed, and the result must be flip-free whatever
+  // they are. A tiny weight (the joint method's gamma = 1e-7) keeps a weak
+  // barrier; a zero weight has none, only the step bound protects the face.
+  for(double small : {1e-7, 0.})
+  for(const Named_soup& disk : disks())
+  {
+    Scoped_context ctx(std::string(disk.name) + ", every third face of weight " + to_text(small));
+    TestType mesh;
+    build_mesh(disk.soup, mesh);
+    auto weight = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    std::size_t i = 0;
+    for(auto f : faces(mesh)) put(weight, f, (i++ % 3 == 0) ? small : 1.);
+    auto uv = vertex_uv_map(mesh);
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::face_weight_map(weight)), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    CHECK(std::isfinite(SMP::distortion_energy(mesh, uv)));
+  }
+}
+
+CUT_TYPED_TEST(developable_patches_reach_isometry, Mesh_types)
+{
+  Soup flat = grid_soup(8, 8, 1., 1.);
+  jitter_xy(flat, 0.03, 17);
+  const Named_soup patches[] = {{"flat jittered grid", flat},
+                                {"flat disk", flat_disk_soup(5, 16)},
+                                {"cylinder patch", cylinder_patch_soup(12, 6, 1., 2., 1.5)},
+                                {"thin cylinder patch", cylinder_patch_soup(16, 4, 0.2, 3., 0.5)}};
+  for(const Named_soup& patch : patches)
+  {
+    Scoped_context ctx(patch.name);
+    TestType mesh;
+    build_mesh(patch.soup, mesh);
+    auto uv = vertex_uv_map(mesh);
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    const double energy = SMP::distortion_energy(mesh, uv);
+    CHECK_MSG(energy >= 4. && energy - 4. <= 1e-6, "E_d - 4 = " << energy - 4.);
+  }
+}
+
+CUT_TYPED_TEST(optimum_does_not_depend_on_scale, Mesh_types)
+{
+  std::vector<Point_2> reference;
+  double reference_energy = 0.;
+  for(double s : {1., 1e-3, 1e3})
+  {
+    Scoped_context ctx("scale " + to_text(s));
+    Soup soup = wavy_disk_soup(8, 22, 5);
+    soup.scale(s);
+    TestType mesh;
+    const auto vertex_of = build_mesh(soup, mesh);
+    auto uv = vertex_uv_map(mesh);
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    const double energy = SMP::distortion_energy(mesh, uv);
+    std::vector<Point_2> scaled;
+    for(auto v : vertex_of) scaled.push_back(Point_2(get(uv, v).x() / s, get(uv, v).y() / s));
+    if(s == 1.)
+    {
+      reference = scaled;
+      reference_energy = energy;
+      continue;
+    }
+    CHECK_REL(energy, reference_energy, 1e-8);
+    // the UVs themselves scale with the mesh (same start, same iterations)
+    double deviation = 0.;
+    for(std::size_t i = 0; i < scaled.size(); ++i)
+      deviation = (std::max)(deviation, std::sqrt(CGAL::squared_distance(scaled[i], reference[i])));
+    CHECK_MSG(deviation <= 1e-6, "max UV deviation / scale = " << deviation);
+  }
+}
+
+CUT_TEST_MAIN()
