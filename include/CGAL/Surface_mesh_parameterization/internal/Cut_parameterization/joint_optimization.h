@@ -4,7 +4,9 @@
 #define CGAL_SMP_CUT_INTERNAL_JOINT_OPTIMIZATION_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/discontinuity_field.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
@@ -130,13 +132,15 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   return OK;
 }
 
-/// The whole method from `state.is_cut` (the initial cut, which must leave
-/// every component a topological disk). Fills the rest of `state`.
+/// The whole method from `state.is_cut` (seams given by the user), first
+/// completed into an initial cut that leaves every component a disk. Fills
+/// the rest of `state`.
 template <typename Surface>
 Error_code joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
                               const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  if(!make_disks(surface, state.is_cut)) return ERROR_NO_TOPOLOGICAL_DISC;
   if(!build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv)) return ERROR_DEGENERATE_FACE;
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
@@ -164,6 +168,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
   state.newton_iterations += report.iterations;
   if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  pack_charts(state.chart, state.x);
   if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),
                                               settings.epsilon_end, mean_distortion(state.chart, state.x)}))
     return ERROR_CANCELED;
