@@ -1,0 +1,246 @@
+// Error codes of symmetric_dirichlet_parameterize on bad input (never a
+// crash), and the package's message / name tables.
+#include "generators.h"
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+
+#include <cstring>
+#include <set>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using namespace cut_test;
+
+namespace {
+
+template <typename Mesh>
+SMP::Error_code parameterize(const Mesh& mesh)
+{
+  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  return SMP::symmetric_dirichlet_parameterize(mesh, uv);
+}
+
+template <typename Mesh>
+SMP::Error_code parameterize_soup(const Soup& soup)
+{
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  return parameterize(mesh);
+}
+
+/// Index of the grid point (i, j) of grid_soup(nx, ...).
+std::size_t grid_point(int nx, int i, int j) { return std::size_t(j * (nx + 1) + i); }
+
+} // namespace
+
+CUT_TYPED_TEST(empty_mesh, Mesh_types)
+{
+  TestType mesh;
+  CHECK_EQ(parameterize(mesh), SMP::ERROR_EMPTY_MESH);
+}
+
+CUT_TYPED_TEST(non_triangular_meshes, Mesh_types)
+{
+  CHECK_EQ(parameterize_soup<TestType>(quad_grid_soup(1, 1)), SMP::ERROR_NON_TRIANGULAR_MESH);
+  CHECK_EQ(parameterize_soup<TestType>(quad_grid_soup(3, 2)), SMP::ERROR_NON_TRIANGULAR_MESH);
+  // triangles and one quad: two triangles of a grid merged
+  Soup mixed = grid_soup(3, 3);
+  const auto a = mixed.faces[0], b = mixed.faces[1]; // cell (0,0): (0,1,5) and (0,5,4)
+  mixed.faces.erase(mixed.faces.begin(), mixed.faces.begin() + 2);
+  mixed.faces.push_back({a[0], a[1], a[2], b[2]});
+  CHECK_EQ(parameterize_soup<TestType>(mixed), SMP::ERROR_NON_TRIANGULAR_MESH);
+  // a pentagon fan center: one polygon of 5 sides
+  Soup pentagon;
+  for(int k = 0; k < 5; ++k) pentagon.add_point(std::cos(2. * pi * k / 5), std::sin(2. * pi * k / 5), 0.);
+  pentagon.faces.push_back({0, 1, 2, 3, 4});
+  CHECK_EQ(parameterize_soup<TestType>(pentagon), SMP::ERROR_NON_TRIANGULAR_MESH);
+}
+
+CUT_TYPED_TEST(not_a_topological_disk, Mesh_types)
+{
+  CHECK_EQ(parameterize_soup<TestType>(sphere_soup(2)), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+  CHECK_EQ(parameterize_soup<TestType>(sphere_soup(1)), SMP::ERROR_NO_TOPOLOGICAL_DISC); // octahedron
+  CHECK_EQ(parameterize_soup<TestType>(torus_soup(8, 5)), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+  CHECK_EQ(parameterize_soup<TestType>(disk_with_holes_soup(5, 1)), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+  CHECK_EQ(parameterize_soup<TestType>(disk_with_holes_soup(8, 2)), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+  // a disk plus a closed component
+  Soup mixed = grid_soup(3, 3);
+  mixed.append(sphere_soup(2).translate(3., 0., 0.));
+  CHECK_EQ(parameterize_soup<TestType>(mixed), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+}
+
+CUT_TYPED_TEST(disjoint_disks_are_accepted, Mesh_types)
+{
+  // documented: several disjoint disks, each on its own circle
+  TestType mesh;
+  build_mesh(two_components_soup(3), mesh);
+  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  CHECK(SMP::distortion_energy(mesh, uv) - 4. <= 1e-6); // both flat
+}
+
+CUT_TYPED_TEST(non_finite_coordinates, Mesh_types)
+{
+  const double bad_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity()};
+  for(double bad : bad_values)
+    for(int coordinate = 0; coordinate < 3; ++coordinate)
+    {
+      Scoped_context ctx("value " + to_text(bad) + " in coordinate " + to_text(coordinate));
+      Soup soup = grid_soup(3, 3);
+      soup.points[grid_point(3, 1, 2)][coordinate] = bad; // an interior point
+      CHECK_EQ(parameterize_soup<TestType>(soup), SMP::ERROR_NON_FINITE_COORDINATE);
+      Soup border = grid_soup(3, 3);
+      border.points[0][coordinate] = bad; // a border point
+      CHECK_EQ(parameterize_soup<TestType>(border), SMP::ERROR_NON_FINITE_COORDINATE);
+    }
+}
+
+CUT_TYPED_TEST(degenerate_faces, Mesh_types)
+{
+  {
+    Scoped_context ctx("an interior point moved onto its neighbor: two zero-area faces");
+    Soup soup = grid_soup(3, 3);
+    soup.points[grid_point(3, 1, 1)] = soup.points[grid_point(3, 2, 1)];
+    CHECK_EQ(parameterize_soup<TestType>(soup), SMP::ERROR_DEGENERATE_FACE);
+  }
+  {
+    Scoped_context ctx("an interior point moved onto the opposite edge of one of its faces");
+    Soup soup = grid_soup(4, 4);
+    // grid_soup splits cell (2,2) (i + j even) into (p, q, r) and (p, r, (2,3)),
+    // p = (2,2), q = (3,2), r = (3,3): move p onto the segment q r
+    const std::size_t p = grid_point(4, 2, 2), q = grid_point(4, 3, 2), r = grid_point(4, 3, 3);
+    soup.points[p] = {soup.points[q][0], 0.5 * (soup.points[q][1] + soup.points[r][1]), 0.};
+    CHECK_EQ(parameterize_soup<TestType>(soup), SMP::ERROR_DEGENERATE_FACE);
+  }
+  {
+    Scoped_context ctx("a single collinear triangle");
+    Soup soup;
+    soup.add_point(0, 0, 0);
+    soup.add_point(1, 1, 1);
+    soup.add_point(2, 2, 2);
+    soup.add_triangle(0, 1, 2);
+    CHECK_EQ(parameterize_soup<TestType>(soup), SMP::ERROR_DEGENERATE_FACE);
+  }
+  {
+    Scoped_context ctx("a triangle with two equal points");
+    Soup soup;
+    soup.add_point(0, 0, 0);
+    soup.add_point(1, 0, 0);
+    soup.add_point(1, 0, 0);
+    soup.add_triangle(0, 1, 2);
+    CHECK_EQ(parameterize_soup<TestType>(soup), SMP::ERROR_DEGENERATE_FACE);
+  }
+}
+
+CUT_TYPED_TEST(bad_parameters, Mesh_types)
+{
+  TestType mesh;
+  const auto vertex_of = build_mesh(grid_soup(3, 3), mesh);
+  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  // starting UVs with a flipped face (mirrored), or with a NaN
+  for(auto v : vertices(mesh)) put(uv, v, Point_2(get(vpm, v).x(), -get(vpm, v).y()));
+  CHECK_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)),
+           SMP::ERROR_NO_1_TO_1_MAPPING);
+  for(auto v : vertices(mesh)) put(uv, v, Point_2(get(vpm, v).x(), get(vpm, v).y()));
+  put(uv, vertex_of[5], Point_2(std::numeric_limits<double>::quiet_NaN(), 0.));
+  CHECK_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)),
+           SMP::ERROR_NO_1_TO_1_MAPPING);
+  // a valid start is accepted and stays isometric
+  for(auto v : vertices(mesh)) put(uv, v, Point_2(get(vpm, v).x(), get(vpm, v).y()));
+  CHECK_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)), SMP::OK);
+  CHECK_NEAR(SMP::distortion_energy(mesh, uv), 4., 1e-12);
+
+  // negative or non-finite face weights
+  for(double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+  {
+    Scoped_context ctx("weight " + to_text(bad));
+    auto weight = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    for(auto f : faces(mesh)) put(weight, f, 1.);
+    put(weight, *faces(mesh).begin(), bad);
+    CHECK_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::face_weight_map(weight)),
+             SMP::ERROR_WRONG_PARAMETER);
+  }
+}
+
+CUT_TYPED_TEST(tiny_and_odd_inputs, Mesh_types)
+{
+  {
+    Scoped_context ctx("a single triangle: no interior vertex, reaches isometry");
+    Soup soup;
+    soup.add_point(0, 0, 0);
+    soup.add_point(2, 0, 0.5);
+    soup.add_point(0.3, 1, -1);
+    soup.add_triangle(0, 1, 2);
+    TestType mesh;
+    build_mesh(soup, mesh);
+    auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    CHECK_NEAR(SMP::distortion_energy(mesh, uv), 4., 1e-6);
+  }
+  {
+    Scoped_context ctx("a grid plus an isolated vertex");
+    Soup soup = grid_soup(3, 3);
+    soup.add_point(5, 5, 5);
+    TestType mesh;
+    build_mesh(soup, mesh);
+    auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+    CHECK_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  }
+  {
+    Scoped_context ctx("only isolated vertices");
+    Soup soup;
+    soup.add_point(0, 0, 0);
+    soup.add_point(1, 0, 0);
+    TestType mesh;
+    build_mesh(soup, mesh);
+    CHECK_EQ(parameterize(mesh), SMP::ERROR_EMPTY_MESH);
+  }
+}
+
+CUT_TEST(error_messages_and_names)
+{
+  const SMP::Error_code codes[] = {SMP::OK,
+                                   SMP::ERROR_EMPTY_MESH,
+                                   SMP::ERROR_NON_TRIANGULAR_MESH,
+                                   SMP::ERROR_NO_TOPOLOGICAL_DISC,
+                                   SMP::ERROR_NO_TOPOLOGICAL_BALL,
+                                   SMP::ERROR_BORDER_TOO_SHORT,
+                                   SMP::ERROR_NON_CONVEX_BORDER,
+                                   SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
+                                   SMP::ERROR_NO_1_TO_1_MAPPING,
+                                   SMP::ERROR_WRONG_PARAMETER,
+                                   SMP::ERROR_NON_FINITE_COORDINATE,
+                                   SMP::ERROR_DEGENERATE_FACE,
+                                   SMP::ERROR_NON_MANIFOLD,
+                                   SMP::ERROR_CANCELED};
+  std::set<std::string> messages, names, values;
+  for(SMP::Error_code c : codes)
+  {
+    const char* m = SMP::error_message(c);
+    const char* n = SMP::error_name(c);
+    REQUIRE(m != nullptr && n != nullptr);
+    CHECK(std::strlen(m) > 0);
+    CHECK(std::string(m) != "Unknown error");
+    CHECK(std::string(n) != "ERROR_UNKNOWN");
+    messages.insert(m);
+    names.insert(n);
+    values.insert(to_text(int(c)));
+  }
+  const std::size_t n = sizeof(codes) / sizeof(codes[0]);
+  CHECK_EQ(values.size(), n); // the package's codes do not collide with CGAL's
+  CHECK_EQ(messages.size(), n);
+  CHECK_EQ(names.size(), n);
+  // messages of CGAL's own codes match CGAL's documented meaning
+  CHECK_EQ(std::string(SMP::error_message(SMP::ERROR_NO_TOPOLOGICAL_DISC)), "Input mesh is not a topological disc");
+  CHECK_EQ(std::string(SMP::error_message(SMP::ERROR_WRONG_PARAMETER)), "A method received an unexpected parameter");
+  CHECK_EQ(std::string(SMP::error_name(SMP::ERROR_DEGENERATE_FACE)), "ERROR_DEGENERATE_FACE");
+  CHECK_EQ(std::string(SMP::error_message(SMP::Error_code(1000))), "Unknown error");
+}
+
+CUT_TEST_MAIN()
