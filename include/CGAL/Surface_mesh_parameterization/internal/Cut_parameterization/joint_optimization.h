@@ -36,6 +36,10 @@ struct Joint_settings
   int passes = 1;
   double minimum_relative_cut_length = 0.2;
   int max_newton_iterations = 500;
+  // The u-steps after the first only track a v that changes anyway: capping
+  // them saves most of the time on hard inputs and leaves E_d unchanged on
+  // the benchmark (measured: octopus 2.4x faster, bimba/lion/cat equal).
+  int max_alternation_newton_iterations = 50;
   double alternation_tolerance = 1e-6; // Newton tolerance of the u-steps inside the alternation
   double final_tolerance = 1e-9;       // of the final solve on the cut mesh
   std::function<bool(const Joint_progress&)> progress; // false: cancel
@@ -117,8 +121,10 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
     for(int i = 0; i < settings.iterations_per_epsilon; ++i)
     {
       for(std::size_t f = 0; f < nf; ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
-      const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations,
-                                                      settings.alternation_tolerance);
+      const int cap = alternation == 0 ? settings.max_newton_iterations
+                                        : (std::min)(settings.max_newton_iterations,
+                                                     settings.max_alternation_newton_iterations);
+      const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
       state.newton_iterations += report.iterations;
       if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
