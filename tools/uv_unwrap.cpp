@@ -139,12 +139,12 @@ bool parse_arguments(int argc, char** argv, Options& options)
 
 // ---------------------------------------------------------------- input
 
-// A spherical cap reaching 135 degrees from its pole: a disk curved enough
+// A spherical cap reaching 165 degrees from its pole: a disk curved enough
 // that it cannot be flattened without seams, used when no data mesh exists.
 void make_spherical_cap(Mesh& mesh)
 {
   const int rings = 16, segments = 48;
-  const double max_polar_angle = 0.75 * M_PI;
+  const double max_polar_angle = 0.92 * M_PI; // about 165 degrees
   std::vector<std::vector<Mesh::Vertex_index>> ring(rings);
   const auto pole = mesh.add_vertex(Point_3(0., 0., 1.));
   for(int k = 0; k < rings; ++k)
@@ -182,7 +182,7 @@ fs::path executable_directory(const char* argv0)
 // build's bin/ folder. Empty if neither exists.
 std::string find_default_mesh(const char* argv0)
 {
-  const char* const name = "meshes/nefertiti.off";
+  const char* const name = "meshes/mushroom.off";
   std::vector<fs::path> candidates;
   if(const char* dir = std::getenv("CGAL_DATA_DIR"))
     if(*dir) candidates.push_back(fs::path(dir) / name);
