@@ -32,6 +32,7 @@ struct Cut_and_parameterize_result
   std::size_t number_of_charts = 0;    ///< connected components of the cut mesh
   std::size_t number_of_seam_edges = 0;///< seam edges (mesh boundary excluded)
   std::size_t newton_iterations = 0;   ///< total projected Newton iterations
+  std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)
@@ -125,6 +126,7 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
     }
   result.seam_length = seam / std::sqrt(state.chart.total_area() / M_PI);
   result.newton_iterations = state.newton_iterations;
+  result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
   result.distortion = mean_distortion(state.chart, state.x);
 }
@@ -172,6 +174,10 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
+///
+/// Degenerate faces (zero area, needles, coincident corners) are accepted:
+/// their rest shape is clamped to a height of 1e-4 times their longest side
+/// (counted in `number_of_degenerate_faces`), so no NaN can appear.
 ///
 /// \pre the mesh is a triangle mesh
 /// \post on success, no face of the UV map is flipped, and every seam edge is

@@ -46,7 +46,8 @@ Vector3 to_vector3(const Point& p)
   return Vector3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-/// 3D area and UV Jacobian of face f; the Jacobian is NaN for a degenerate face.
+/// 3D area and UV Jacobian of face f; the Jacobian is NaN for a degenerate
+/// face (see Chart_mesh::set_rest_shape()).
 template <typename TriangleMesh, typename UVMap, typename VertexPointMap>
 std::pair<double, Matrix2> face_area_and_jacobian(
   typename boost::graph_traits<TriangleMesh>::face_descriptor f,
@@ -56,9 +57,10 @@ std::pair<double, Matrix2> face_area_and_jacobian(
   const auto h1 = next(h, mesh), h2 = next(h1, mesh);
   Chart_mesh one;
   one.resize_faces(1);
-  if(!one.set_rest_shape(0, to_vector3(get(vpm, target(h, mesh))),
-                         to_vector3(get(vpm, target(h1, mesh))), to_vector3(get(vpm, target(h2, mesh)))))
-    return {one.area[0], Matrix2::Constant(std::numeric_limits<double>::quiet_NaN())};
+  const Vector3 p0 = to_vector3(get(vpm, target(h, mesh))), p1 = to_vector3(get(vpm, target(h1, mesh))),
+                p2 = to_vector3(get(vpm, target(h2, mesh)));
+  if(one.set_rest_shape(0, p0, p1, p2))
+    return {0.5 * (p1 - p0).cross(p2 - p0).norm(), Matrix2::Constant(std::numeric_limits<double>::quiet_NaN())};
   const Vector2 u0 = corner_uv(mesh, uvmap, h), u1 = corner_uv(mesh, uvmap, h1), u2 = corner_uv(mesh, uvmap, h2);
   Matrix2 D;
   D << u1.x() - u0.x(), u2.x() - u0.x(), u1.y() - u0.y(), u2.y() - u0.y();
@@ -79,7 +81,8 @@ auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
 ///
 /// Distortion of one face: σ1² + σ2² + σ1⁻² + σ2⁻² of the map from its 3D
 /// triangle to its UV triangle (4 for an isometry, +∞ for a flipped or
-/// collapsed UV triangle or a degenerate 3D face).
+/// collapsed UV triangle or a degenerate 3D face, i.e. one whose height is
+/// below 1e-4 times its longest side).
 ///
 /// `uvmap` is keyed either by halfedges (UV of the corner at `target(h)` in
 /// `face(h)`, as written by `cut_and_parameterize()`) or by vertices
@@ -101,7 +104,8 @@ double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descript
 ///
 /// The distortion E_d = Σ_f A_f (σ1²+σ2²+σ1⁻²+σ2⁻²) / Σ_f A_f of a UV map
 /// (A_f: 3D area), as in the paper's Table 1. Minimum 4; +∞ if any face is
-/// flipped or collapsed in UV. Zero-area 3D faces have no weight.
+/// flipped or collapsed in UV. Degenerate 3D faces (zero area, or height
+/// below 1e-4 times the longest side) have no weight.
 /// Named parameters: `vertex_point_map` (CGAL). `uvmap` as in `face_distortion()`.
 /// \pre `mesh` is a non-empty triangle mesh
 template <typename TriangleMesh, typename UVMap,
@@ -114,8 +118,8 @@ double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
   for(auto f : faces(mesh))
   {
     const auto aj = internal::cut::face_area_and_jacobian(f, mesh, uvmap, vpm);
-    if(!(aj.first > 0.)) continue;
-    if(!aj.second.allFinite() || !(aj.second.determinant() > 0.))
+    if(!aj.second.allFinite()) continue; // degenerate 3D face
+    if(!(aj.second.determinant() > 0.))
       return std::numeric_limits<double>::infinity();
     sum += aj.first * internal::cut::symmetric_dirichlet_measure(aj.second);
     area += aj.first;

@@ -83,12 +83,16 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations; default 500
 ///   - `stopping_tolerance`: double; default 1e-9
 ///
-/// \pre every face is a triangle with non-zero area
+/// Degenerate faces (zero area, needles, coincident corners) are accepted:
+/// their rest shape is clamped to a height of 1e-4 times their longest side,
+/// so they stay non-flipped and produce no NaN.
+///
+/// \pre every face is a triangle
 /// \post on `OK`, every face has a UV triangle of positive signed area
 ///
 /// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`,
-///   `ERROR_DEGENERATE_FACE`, `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
+///   `ERROR_WRONG_PARAMETER` (negative or non-finite weight), `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
 ///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
 template <typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -107,8 +111,7 @@ Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMa
 
   ic::Chart_mesh chart;
   std::vector<int> corner_uv;
-  if(!ic::build_chart_mesh(surface, std::vector<char>(surface.edges.size(), 0), chart, corner_uv))
-    return ERROR_DEGENERATE_FACE;
+  ic::build_chart_mesh(surface, std::vector<char>(surface.edges.size(), 0), chart, corner_uv);
 
   std::vector<double> weights(chart.number_of_faces(), 1.);
   const auto weight_map = choose_parameter(get_parameter(np, internal_np::face_weight_map),

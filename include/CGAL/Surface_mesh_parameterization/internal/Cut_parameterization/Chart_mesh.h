@@ -31,21 +31,36 @@ struct Chart_mesh
 
   std::size_t number_of_faces() const { return faces.size(); }
 
-  /// Sets the rest shape of face f from its 3D corners. Returns false when
-  /// the face is degenerate (its rest shape has no inverse).
-  bool set_rest_shape(std::size_t f, const Vector3& p0, const Vector3& p1, const Vector3& p2)
+  /// Relative height below which a face counts as degenerate (see set_rest_shape()).
+  static constexpr double degenerate_ratio = 1e-4;
+
+  /// Sets the rest shape of face f from its 3D corners, as a 2D triangle
+  /// rebuilt from its edge lengths. A degenerate face (zero area, a needle,
+  /// coincident corners) gets its height and shortest sides clamped to
+  /// `degenerate_ratio` times its longest side (or `fallback_length` if all
+  /// corners coincide), so no NaN or infinity can come out of it; its area
+  /// becomes the clamped one. Returns true iff the face was clamped.
+  bool set_rest_shape(std::size_t f, const Vector3& p0, const Vector3& p1, const Vector3& p2,
+                      double fallback_length = 1.)
   {
-    const Vector3 e1 = p1 - p0, e2 = p2 - p0;
-    const double l1 = e1.norm();
-    const Vector3 n = e1.cross(e2);
-    const double twice_area = n.norm();
-    area[f] = 0.5 * twice_area;
-    if(!(l1 > 0.) || !(twice_area > 0.) || !std::isfinite(twice_area))
-      return false;
+    double l01 = (p1 - p0).norm(), l02 = (p2 - p0).norm(), l12 = (p2 - p1).norm();
+    const double lmax = (std::max)({l01, l02, l12});
+    const double scale = (lmax > 0. && std::isfinite(lmax)) ? lmax : fallback_length;
+    const double floor = degenerate_ratio * scale;
+    bool clamped = !(lmax > 0.) || !std::isfinite(lmax);
+    if(clamped) l01 = l02 = l12 = scale;
+    if(l01 < floor) { l01 = floor; clamped = true; }
+    const double x = (l01 * l01 + l02 * l02 - l12 * l12) / (2. * l01);
+    double y = std::sqrt((std::max)(0., l02 * l02 - x * x));
+    // the height from the 3D cross product is more accurate than from lengths
+    const double twice_area = (p1 - p0).cross(p2 - p0).norm();
+    if(!clamped && std::isfinite(twice_area)) y = twice_area / l01;
+    if(y < floor) { y = floor; clamped = true; }
     Matrix2 rest;
-    rest << l1, e1.dot(e2) / l1, 0., twice_area / l1;
+    rest << l01, x, 0., y;
     rest_inverse[f] = rest.inverse();
-    return rest_inverse[f].allFinite();
+    area[f] = 0.5 * l01 * y;
+    return clamped;
   }
 
   void resize_faces(std::size_t n)

@@ -119,9 +119,10 @@ Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
 
 /// Chart mesh whose UV vertices are the corner classes of the surface cut
 /// along the edges flagged in `is_cut` (indexed like `surface.edges`); also
-/// returns the UV vertex of every corner. Returns false on a degenerate face.
+/// returns the UV vertex of every corner. Returns the number of degenerate
+/// faces, whose rest shapes were clamped (Chart_mesh::set_rest_shape()).
 template <typename TriangleMesh>
-bool build_chart_mesh(const Indexed_surface<TriangleMesh>& surface, const std::vector<char>& is_cut,
+std::size_t build_chart_mesh(const Indexed_surface<TriangleMesh>& surface, const std::vector<char>& is_cut,
                       Chart_mesh& chart, std::vector<int>& corner_uv)
 {
   const int n_corners = int(3 * surface.number_of_faces());
@@ -151,14 +152,18 @@ bool build_chart_mesh(const Indexed_surface<TriangleMesh>& surface, const std::v
   chart = Chart_mesh();
   chart.number_of_vertices = n;
   chart.resize_faces(surface.number_of_faces());
-  bool ok = true;
+  double edge_sum = 0.;
+  for(int fe = 0; fe < n_corners; ++fe) edge_sum += surface.edge_length(fe);
+  const double mean_edge = edge_sum > 0. ? edge_sum / n_corners : 1.;
+  std::size_t degenerate = 0;
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
   {
     chart.faces[f] = {corner_uv[3*f], corner_uv[3*f+1], corner_uv[3*f+2]};
     const auto& cv = surface.corner_vertex[f];
-    ok = chart.set_rest_shape(f, surface.points[cv[0]], surface.points[cv[1]], surface.points[cv[2]]) && ok;
+    if(chart.set_rest_shape(f, surface.points[cv[0]], surface.points[cv[1]], surface.points[cv[2]], mean_edge))
+      ++degenerate;
   }
-  return ok;
+  return degenerate;
 }
 
 } // namespace cut

@@ -68,6 +68,7 @@ struct Joint_state
   UV_vector x;
   Eigen::VectorXd v;             // per face
   std::size_t newton_iterations = 0;
+  std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
 };
 
@@ -84,17 +85,16 @@ double mean_edge_length(const Surface& surface)
 /// Cuts the edges of `paths`, rebuilds the chart mesh and carries the UVs
 /// over: both sides of a new cut start where the uncut vertex was.
 template <typename Surface>
-bool apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Joint_state& state)
+void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Joint_state& state)
 {
   for(const Cut_path& path : paths)
     for(int e : path.edges) state.is_cut[e] = 1;
   const std::vector<int> old_corner_uv = state.corner_uv;
   const UV_vector old_x = state.x;
-  if(!build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv)) return false;
+  build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   state.x.resize(2 * state.chart.number_of_vertices);
   for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
     state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
-  return true;
 }
 
 inline std::vector<double> face_distortions(const Chart_mesh& chart, const UV_vector& x)
@@ -147,7 +147,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
   if(!make_disks(surface, state.is_cut)) return ERROR_NO_TOPOLOGICAL_DISC;
-  if(!build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv)) return ERROR_DEGENERATE_FACE;
+  state.degenerate_faces = build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
   if(embedding == Embedding_status::SOLVE_FAILED || number_of_flipped_faces(state.chart, state.x) > 0)
@@ -163,7 +163,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
     const Error_code status = alternate(surface, face_lambda, settings, pass, state, paths);
     if(status != OK) return status;
     if(paths.empty()) break;
-    if(!apply_cuts(surface, paths, state)) return ERROR_DEGENERATE_FACE;
+    apply_cuts(surface, paths, state);
     if(settings.progress && !settings.progress({"cut", pass, settings.alternations_per_pass(),
                                                 settings.alternations_per_pass(), settings.epsilon_end,
                                                 mean_distortion(state.chart, state.x)}))
@@ -175,6 +175,8 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   state.newton_iterations += report.iterations;
   if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   pack_charts(state.chart, state.x);
+  // never hand out a silently wrong map (checked in every build type)
+  if(!state.x.allFinite() || number_of_flipped_faces(state.chart, state.x) > 0) return ERROR_NO_1_TO_1_MAPPING;
   if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),
                                               settings.epsilon_end, mean_distortion(state.chart, state.x)}))
     return ERROR_CANCELED;
