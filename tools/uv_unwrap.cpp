@@ -1,6 +1,7 @@
 // uv_unwrap: command-line front end of cut_and_parameterize(). Reads a
 // triangle mesh, cuts it and computes a UV map, writes an OBJ with texture
-// coordinates and, on request, a JSON file of statistics.
+// coordinates and, on request, a JSON file of statistics and pictures
+// (tools/preview).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -10,6 +11,9 @@
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
+#include "preview/preview.h"
+
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -48,6 +52,8 @@ struct Options
   std::string input;          // empty: the built-in default mesh
   std::string output;         // empty: <input stem>_uv.obj in the current directory
   std::string stats;
+  std::string svg, png, v_field; // pictures, written by tools/preview
+  Preview_camera camera;         // of the PNG; y up unless --up
   double lambda = 1.;
   double epsilon_start = 0.1;
   double epsilon_end = 0.01;
@@ -71,6 +77,10 @@ const char* const usage_text =
   "  --epsilon-end X         epsilon is halved while above this value (default 0.01)\n"
   "  --iterations N          alternations per epsilon (default 3)\n"
   "  --passes N              optimize-and-cut passes (default 1)\n"
+  "  --svg FILE              write the UV layout, colored by distortion, as SVG\n"
+  "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
+  "  --up AXIS               up axis of the mesh for --png: x, y, z, -z, ... (default y)\n"
+  "  --v-field FILE.ply      write the discontinuity field v as a colored PLY\n"
   "  -q, --quiet             print nothing but errors\n"
   "  -h, --help              show this help\n";
 
@@ -122,6 +132,15 @@ bool parse_arguments(int argc, char** argv, Options& options)
     else if(arg == "--epsilon-end") options.epsilon_end = parse_number(arg, next_value());
     else if(arg == "--iterations") options.iterations = parse_count(arg, next_value());
     else if(arg == "--passes") options.passes = parse_count(arg, next_value());
+    else if(arg == "--svg") options.svg = next_value();
+    else if(arg == "--png") options.png = next_value();
+    else if(arg == "--up")
+    {
+      const std::string axis = next_value();
+      if(!preview_camera_for_up_axis(axis, options.camera))
+        throw Failure("invalid value '" + axis + "' for --up (expected x, y, z, -x, -y or -z)");
+    }
+    else if(arg == "--v-field") options.v_field = next_value();
     else if(arg.size() > 1 && arg[0] == '-')
       throw Failure("unknown option '" + arg + "' (see --help)");
     else if(!options.input.empty())
@@ -320,6 +339,60 @@ void write_stats(const std::string& filename, const Run_summary& s)
   if(!out) throw Failure("cannot write '" + filename + "'");
 }
 
+template <typename SeamMap, typename UVMap, typename VMap>
+void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& seams, const UVMap& uvmap,
+                    const VMap& v, const Run_summary& summary, const std::string& name)
+{
+  if(options.svg.empty() && options.png.empty() && options.v_field.empty()) return;
+
+  // The preview library takes plain arrays; a freshly read Surface_mesh has
+  // contiguous indices.
+  Preview_mesh preview;
+  for(auto vd : vertices(mesh))
+  {
+    const Point_3& p = mesh.point(vd);
+    preview.points.push_back({p.x(), p.y(), p.z()});
+  }
+  for(auto f : faces(mesh))
+  {
+    std::array<int, 3> corners;
+    std::array<std::array<double, 2>, 3> uvs;
+    int k = 0;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      corners[k] = int(target(h, mesh).idx());
+      uvs[k] = {uvmap[h].x(), uvmap[h].y()};
+      ++k;
+    }
+    preview.faces.push_back(corners);
+    preview.corner_uv.push_back(uvs);
+    preview.face_distortion.push_back(SMP::face_distortion(f, mesh, uvmap));
+    preview.face_v.push_back(v[f]);
+  }
+  for(auto e : edges(mesh))
+    if(seams[e])
+      preview.seam_edges.emplace_back(int(source(e, mesh).idx()), int(target(e, mesh).idx()));
+
+  if(!options.svg.empty())
+  {
+    Preview_caption caption;
+    caption.distortion = summary.result.distortion;
+    caption.seam_length = summary.result.seam_length;
+    caption.seconds = summary.time_seconds;
+    caption.faces = summary.faces;
+    caption.charts = summary.result.number_of_charts;
+    caption.name = name;
+    if(!write_uv_svg(options.svg, preview, caption)) throw Failure("cannot write '" + options.svg + "'");
+  }
+  if(!options.png.empty())
+  {
+    if(!write_checker_png(options.png, preview, 1024, 768, true, options.camera))
+      throw Failure("cannot write '" + options.png + "'");
+  }
+  if(!options.v_field.empty() && !write_v_field_ply(options.v_field, preview))
+    throw Failure("cannot write '" + options.v_field + "'");
+}
+
 // ---------------------------------------------------------------- run
 
 int run(int argc, char** argv)
@@ -353,6 +426,7 @@ int run(int argc, char** argv)
 
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
 
   // Progress goes to stderr so that stdout keeps the summary only.
   std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
@@ -371,7 +445,8 @@ int run(int argc, char** argv)
                   P::epsilon_end(options.epsilon_end,
                   P::iterations_per_epsilon(options.iterations,
                   P::number_of_passes(options.passes,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))));
+                  P::face_discontinuity_map(v_field,
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))));
 
   Run_summary summary;
   summary.input = input_name;
@@ -390,6 +465,7 @@ int run(int argc, char** argv)
 
   if(!SMP::write_OBJ_with_uvs(options.output, mesh, uvmap))
     throw Failure("cannot write '" + options.output + "'");
+  write_pictures(options, mesh, seams, uvmap, v_field, summary, stem);
 
   if(!options.quiet)
   {
@@ -400,7 +476,8 @@ int run(int argc, char** argv)
               << "), flipped faces " << summary.flipped_faces << "\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
               << "  wrote " << options.output;
-    if(!options.stats.empty()) std::cout << " and " << options.stats;
+    for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field})
+      if(!file->empty()) std::cout << ", " << *file;
     std::cout << std::endl;
   }
   return EXIT_SUCCESS;
