@@ -19,7 +19,7 @@ struct Cut_and_parameterize_progress
   const char* phase = "";      ///< "initialize", "alternate", "cut", "final"
   int pass = 0;                ///< current pass, from 0
   int alternation = 0;         ///< alternations done in this pass
-  int alternations_per_pass = 0;
+  int alternations_per_pass = 0; ///< alternations of one pass (the same in every pass)
   double epsilon = 0.;         ///< current ε (relative to the mean edge length)
   double distortion = 0.;      ///< current E_d (of the v-weighted map while alternating)
 };
@@ -36,6 +36,7 @@ struct Cut_and_parameterize_result
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)
+  /// `true` if `error` is `OK`
   bool ok() const { return error == OK; }
 };
 
@@ -151,8 +152,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// \tparam SeamEdgeMap a `ReadWritePropertyMap`, edge → bool
 /// \tparam HalfedgeUVMap a `WritablePropertyMap`, halfedge → 2D point
 ///
-/// \param mesh the input triangle mesh, a topological disk (closed and
-///   higher-genus meshes need an initial cut, given as seams)
+/// \param mesh the input triangle mesh: any topology (disks, closed or
+///   higher-genus surfaces, several boundaries, several components); parts
+///   that are not disks are first opened by an initial cut
 /// \param seam_edge_map input: seams the user already has (kept);
 ///   output: all seams (input ones plus those found)
 /// \param uvmap output: for every halfedge h with a face, the UV of the

@@ -19,7 +19,7 @@ constexpr Error_code ERROR_DEGENERATE_FACE = Error_code(ERROR_WRONG_PARAMETER + 
 /// An edge or a vertex is non-manifold.
 constexpr Error_code ERROR_NON_MANIFOLD = Error_code(ERROR_WRONG_PARAMETER + 3);
 /// \ingroup PkgCutParameterizationRef
-/// The progress callback asked to stop; outputs hold the last valid state.
+/// The progress callback asked to stop; the output maps are left unchanged.
 constexpr Error_code ERROR_CANCELED = Error_code(ERROR_WRONG_PARAMETER + 4);
 
 /// \ingroup PkgCutParameterizationRef
