@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs, only those missing.
+# Used by setup.sh and test.sh; safe to run again (does nothing then).
+set -euo pipefail
+
+packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libtbb-dev
+          libcgal-demo libstb-dev)
+
+if ! command -v dpkg-query >/dev/null 2>&1; then
+  echo "install_dependencies: not a Debian-like system; install these yourself: ${packages[*]}" >&2
+  exit 0
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_dependencies: all packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo=(sudo)
+else
+  echo "install_dependencies: need root or sudo to install: ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "install_dependencies: installing ${missing[*]}"
+"${sudo[@]}" apt-get update
+# No recommends: libcgal-demo would pull the whole Qt5 stack.
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
