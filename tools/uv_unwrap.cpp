@@ -431,11 +431,13 @@ int run(int argc, char** argv)
   // Progress goes to stderr so that stdout keeps the summary only.
   std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
     [](const SMP::Cut_and_parameterize_progress& p) {
-      std::cerr << "  " << p.phase << ": pass " << p.pass + 1;
-      if(std::string(p.phase) == "alternate")
-        std::cerr << ", alternation " << p.alternation << "/" << p.alternations_per_pass
-                  << ", epsilon " << p.epsilon;
-      std::cerr << ", E_d " << p.distortion << std::endl;
+      const std::string phase = p.phase;
+      std::cerr << "  " << phase << ":";
+      if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
+      if(phase == "alternate")
+        std::cerr << " alternation " << p.alternation << "/" << p.alternations_per_pass
+                  << ", epsilon " << p.epsilon << ",";
+      std::cerr << " E_d " << p.distortion << std::endl;
       return true;
     };
 
