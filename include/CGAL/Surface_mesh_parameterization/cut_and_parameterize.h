@@ -184,6 +184,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// \pre the mesh is a triangle mesh
 /// \post on success, no face of the UV map is flipped, and every seam edge is
 ///   an edge of the mesh that is not on its boundary
+///
+/// \sa \ref PkgCutParameterizationNamedParameters (types, defaults and valid
+///   values of the named parameters), \ref Chapter_Cut_parameterization
 template <typename TriangleMesh, typename SeamEdgeMap, typename HalfedgeUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Cut_and_parameterize_result

@@ -23,8 +23,8 @@ constexpr Error_code ERROR_NON_MANIFOLD = Error_code(ERROR_WRONG_PARAMETER + 3);
 constexpr Error_code ERROR_CANCELED = Error_code(ERROR_WRONG_PARAMETER + 4);
 
 /// \ingroup PkgCutParameterizationRef
-/// Message for any code above or of CGAL's `Error_code` (CGAL's own table is
-/// off by one from code 4 on; this one is not).
+/// Message for any code of CGAL's `Error_code` or of this package (CGAL's own
+/// table is off by one from code 4 on; this one is not).
 inline const char* error_message(Error_code code)
 {
   switch(int(code))
@@ -48,7 +48,8 @@ inline const char* error_message(Error_code code)
 }
 
 /// \ingroup PkgCutParameterizationRef
-/// Short identifier of a code (e.g. "ERROR_DEGENERATE_FACE"), for logs and JSON.
+/// Short identifier of a code, such as "ERROR_DEGENERATE_FACE" (and "ok" for
+/// `OK`), for logs and JSON.
 inline const char* error_name(Error_code code)
 {
   switch(int(code))

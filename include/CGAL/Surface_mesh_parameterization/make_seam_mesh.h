@@ -33,7 +33,7 @@ std::size_t normalize_seam_maps(const TriangleMesh& mesh, SeamEdgeMap seam_edge_
 /// \ingroup PkgCutParameterizationRef
 ///
 /// Builds the `CGAL::Seam_mesh` of `mesh` opened along the seams of
-/// `seam_edge_map` (e.g. as returned by `cut_and_parameterize()`), filling
+/// `seam_edge_map` (such as the seams found by `cut_and_parameterize()`), filling
 /// `seam_vertex_map` and setting the seam mesh's seam counter, which CGAL
 /// only updates through `add_seam()`. The UV map written by
 /// `cut_and_parameterize()` (keyed by halfedges of `mesh`) is then a valid

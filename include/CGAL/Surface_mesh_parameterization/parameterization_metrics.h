@@ -81,7 +81,7 @@ auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
 ///
 /// Distortion of one face: σ1² + σ2² + σ1⁻² + σ2⁻² of the map from its 3D
 /// triangle to its UV triangle (4 for an isometry, +∞ for a flipped or
-/// collapsed UV triangle or a degenerate 3D face, i.e. one whose height is
+/// collapsed UV triangle or a degenerate 3D face: one whose height is
 /// below 1e-4 times its longest side).
 ///
 /// `uvmap` is keyed either by halfedges (UV of the corner at `target(h)` in

@@ -94,6 +94,9 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 ///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`,
 ///   `ERROR_WRONG_PARAMETER` (negative or non-finite weight), `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
 ///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
+///
+/// \sa \ref PkgCutParameterizationNamedParameters (types, defaults and valid
+///   values of the named parameters), \ref Chapter_Cut_parameterization
 template <typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMap uvmap,

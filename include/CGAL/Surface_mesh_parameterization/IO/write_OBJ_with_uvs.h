@@ -30,6 +30,7 @@ namespace Surface_mesh_parameterization {
 ///   a UV across a non-seam edge share one texture vertex and seams split it;
 /// - one `f v/vt ...` line per face, in the order of `faces(mesh)`, starting
 ///   at the target of `halfedge(f, mesh)` (the order CGAL's own writers use).
+///
 /// Indices are 1-based. Coordinates are written with enough digits to be
 /// read back exactly, unless `stream_precision` is given.
 ///
