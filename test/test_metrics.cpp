@@ -215,6 +215,31 @@ CUT_TYPED_TEST(zero_area_faces_have_no_weight_in_distortion, Mesh_types)
   CHECK_REL(SMP::distortion_energy(mesh, uv), ed_of_singular_values(2., 1.), 1e-14);
   CHECK(std::isinf(SMP::face_distortion(face_of(mesh, vertex_of[0], vertex_of[3]), mesh, uv)));
   CHECK_REL(SMP::surface_area(mesh), 0.5, 1e-15);
+
+  // a needle (height 1e-6 of its longest side, below the documented 1e-4) counts as degenerate too;
+  // a thin but proper face (height 1e-2) does not
+  for(double height : {1e-6, 1e-2})
+  {
+    Scoped_context ctx("height " + to_text(height));
+    Soup thin = soup;
+    thin.points[3] = {1.5, -height * 2., 0.}; // T2's longest side p0 p3 has length ~2
+    TestType thin_mesh;
+    const auto v = build_mesh(thin, thin_mesh);
+    auto thin_uv = vertex_uv_map(thin_mesh);
+    for(std::size_t i = 0; i < 4; ++i) put(thin_uv, v[i], get(uv, vertex_of[i]));
+    const double t2 = SMP::face_distortion(face_of(thin_mesh, v[0], v[3]), thin_mesh, thin_uv);
+    const double ed = SMP::distortion_energy(thin_mesh, thin_uv);
+    if(height < 1e-4)
+    {
+      CHECK(std::isinf(t2));
+      CHECK_REL(ed, ed_of_singular_values(2., 1.), 1e-14);
+    }
+    else
+    {
+      CHECK(std::isfinite(t2));
+      CHECK(ed > ed_of_singular_values(2., 1.));
+    }
+  }
 }
 
 CUT_TYPED_TEST(seam_length_on_tiny_meshes, Mesh_types)

@@ -143,6 +143,43 @@ Vector6 face_gradient(const ic::Chart_mesh& chart, const Vector6& x)
 
 } // namespace
 
+CUT_TEST(rest_shape_keeps_edge_lengths_and_area)
+{
+  Rng rng(13);
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    const auto p = random_triangle(rng);
+    ic::Chart_mesh chart;
+    chart.resize_faces(1);
+    CHECK(!chart.set_rest_shape(0, p[0], p[1], p[2])); // not clamped
+    const Matrix2 rest = chart.rest_inverse[0].inverse();
+    const ic::Vector2 e1 = rest.col(0), e2 = rest.col(1);
+    CHECK_REL(e1.norm(), (p[1] - p[0]).norm(), 1e-12);
+    CHECK_REL(e2.norm(), (p[2] - p[0]).norm(), 1e-12);
+    CHECK_REL((e2 - e1).norm(), (p[2] - p[1]).norm(), 1e-12);
+    const double area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    CHECK_REL(chart.area[0], area, 1e-12);
+    CHECK(rest.determinant() > 0.); // counterclockwise rest shape
+    CHECK_REL(0.5 * rest.determinant(), area, 1e-12);
+  }
+  // degenerate faces are clamped to a finite, positive rest shape
+  const ic::Vector3 o(1, 2, 3), a(2, 2, 3), b(3, 2, 3);
+  const std::array<ic::Vector3, 3> degenerate[] = {
+    {o, a, b},                             // collinear
+    {o, a, a},                             // two equal corners
+    {o, o, o},                             // a point
+    {o, b, ic::Vector3(2, 2 + 1e-9, 3)}};  // a needle
+  for(const auto& p : degenerate)
+  {
+    ic::Chart_mesh chart;
+    chart.resize_faces(1);
+    CHECK(chart.set_rest_shape(0, p[0], p[1], p[2], 0.5));
+    CHECK(chart.rest_inverse[0].allFinite());
+    CHECK(chart.rest_inverse[0].determinant() > 0.);
+    CHECK(chart.area[0] > 0. && std::isfinite(chart.area[0]));
+  }
+}
+
 CUT_TEST(psi_matches_singular_values)
 {
   Rng rng(11);
