@@ -114,6 +114,12 @@ void seam_round_trip(const Mesh& mesh, const std::vector<edge_descriptor_t<Mesh>
       CHECK_MSG(gap <= 1e-12 * scale, "corners of an uncut edge differ, gap " << gap);
   }
 
+  // restarting from the result through the seam mesh keeps it flip-free and no worse
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(seam_mesh, uvmap, SMP::parameters::initialize_from_uv_map(true)),
+             SMP::OK);
+  CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
+  CHECK(SMP::distortion_energy(seam_mesh, uvmap) <= energy * (1. + 1e-12));
+
   // E_s counts each seam edge once
   double length = 0.;
   for(auto e : seams) length += edge_length(mesh, e);

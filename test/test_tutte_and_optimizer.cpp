@@ -269,6 +269,21 @@ CUT_TYPED_TEST(tiny_and_zero_weights_still_never_flip, Mesh_types)
     REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::face_weight_map(weight)), SMP::OK);
     CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
     CHECK(std::isfinite(SMP::distortion_energy(mesh, uv)));
+    // "a line search that never lets a face collapse": no UV triangle is
+    // numerically collapsed either (a face at 1e-15 of the mean UV area is
+    // flip-free only by the luck of rounding)
+    double min_area = std::numeric_limits<double>::infinity(), total = 0.;
+    for(auto f : faces(mesh))
+    {
+      auto h = halfedge(f, mesh);
+      const Point_2 a = get(uv, source(h, mesh)), b = get(uv, target(h, mesh)), c = get(uv, target(next(h, mesh), mesh));
+      const double area = 0.5 * CGAL::cross_product(CGAL::Vector_3<Kernel>(b.x() - a.x(), b.y() - a.y(), 0),
+                                                    CGAL::Vector_3<Kernel>(c.x() - a.x(), c.y() - a.y(), 0)).z();
+      min_area = (std::min)(min_area, area);
+      total += area;
+    }
+    const double mean = total / double(num_faces(mesh));
+    CHECK_MSG(min_area > 1e-10 * mean, "smallest UV area / mean UV area = " << min_area / mean);
   }
 }
 
@@ -279,7 +294,9 @@ CUT_TYPED_TEST(developable_patches_reach_isometry, Mesh_types)
   const Named_soup patches[] = {{"flat jittered grid", flat},
                                 {"flat disk", flat_disk_soup(5, 16)},
                                 {"cylinder patch", cylinder_patch_soup(12, 6, 1., 2., 1.5)},
-                                {"thin cylinder patch", cylinder_patch_soup(16, 4, 0.2, 3., 0.5)}};
+                                {"thin cylinder patch", cylinder_patch_soup(16, 4, 0.2, 3., 0.5)},
+                                {"strip without interior vertex", grid_soup(7, 1, 3.5, 0.5)},
+                                {"bent strip without interior vertex", cylinder_patch_soup(7, 1, 1., 2., 0.4)}};
   for(const Named_soup& patch : patches)
   {
     Scoped_context ctx(patch.name);
@@ -323,6 +340,43 @@ CUT_TYPED_TEST(optimum_does_not_depend_on_scale, Mesh_types)
       deviation = (std::max)(deviation, std::sqrt(CGAL::squared_distance(scaled[i], reference[i])));
     CHECK_MSG(deviation <= 1e-6, "max UV deviation / scale = " << deviation);
   }
+}
+
+CUT_TYPED_TEST(vertex_point_map_is_used, Mesh_types)
+{
+  // positions given through a vertex_point_map (the mesh's own, scaled by 2)
+  // give the same map as a mesh built scaled by 2, for the optimizer and the metrics
+  using vertex_descriptor = typename boost::graph_traits<TestType>::vertex_descriptor;
+  Soup soup = hemisphere_soup(5, 14);
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto scaled_points = get(CGAL::dynamic_vertex_property_t<Point_3>(), mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const auto& p = get(vpm, v);
+    put(scaled_points, v, Point_3(2. * p.x(), 2. * p.y(), 2. * p.z()));
+  }
+  auto uv = vertex_uv_map(mesh);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, CGAL::parameters::vertex_point_map(scaled_points)),
+             SMP::OK);
+  const double energy = SMP::distortion_energy(mesh, uv, CGAL::parameters::vertex_point_map(scaled_points));
+  CHECK_REL(SMP::surface_area(mesh, CGAL::parameters::vertex_point_map(scaled_points)), 4. * SMP::surface_area(mesh),
+            1e-12);
+
+  TestType big;
+  const auto big_vertex_of = build_mesh(soup.scale(2.), big);
+  auto big_uv = vertex_uv_map(big);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(big, big_uv), SMP::OK);
+  CHECK_REL(energy, SMP::distortion_energy(big, big_uv), 1e-10);
+  double deviation = 0.;
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
+    deviation = (std::max)(deviation, std::sqrt(CGAL::squared_distance(get(uv, vertex_of[i]), get(big_uv, big_vertex_of[i]))));
+  CHECK_MSG(deviation <= 1e-9, "max UV deviation " << deviation);
+  // the map of the unscaled mesh is not the same: the map was really computed from the given points
+  auto plain_uv = vertex_uv_map(mesh);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, plain_uv), SMP::OK);
+  CHECK(std::abs(get(plain_uv, vertex_of[1]).x() - get(uv, vertex_of[1]).x()) > 1e-3);
 }
 
 CUT_TEST_MAIN()
