@@ -78,7 +78,9 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 /// \param uvmap output UVs (and input when `initialize_from_uv_map(true)`)
 /// \param np optional named parameters:
 ///   - `vertex_point_map` (CGAL): 3D positions; default `get(vertex_point, mesh)`
-///   - `face_weight_map`: face → double weight w_f ≥ 0; default 1
+///   - `face_weight_map`: face → double weight w_f ≥ 0, not all zero; default 1.
+///     Weights below 1e-7 times the mean are raised to that floor, so every
+///     face keeps a barrier against collapse.
 ///   - `initialize_from_uv_map`: bool, start from `uvmap` (must have no flipped face); default false
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations; default 500
 ///   - `stopping_tolerance`: double; default 1e-9
@@ -119,11 +121,18 @@ Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMa
   std::vector<double> weights(chart.number_of_faces(), 1.);
   const auto weight_map = choose_parameter(get_parameter(np, internal_np::face_weight_map),
                                            CGAL::Constant_property_map<typename ic::Indexed_surface<TriangleMesh>::face_descriptor, double>(1.));
+  double weight_sum = 0.;
   for(std::size_t f = 0; f < weights.size(); ++f)
   {
     weights[f] = get(weight_map, surface.faces[f]);
     if(!(weights[f] >= 0.) || !std::isfinite(weights[f])) return ERROR_WRONG_PARAMETER;
+    weight_sum += weights[f];
   }
+  if(!(weight_sum > 0.)) return ERROR_WRONG_PARAMETER;
+  // A face without weight would have no barrier against collapsing: give it
+  // a tiny one (the joint method's gamma, relative to the mean weight).
+  const double weight_floor = 1e-7 * weight_sum / double(weights.size());
+  for(double& w : weights) w = (std::max)(w, weight_floor);
 
   ic::UV_vector x(2 * chart.number_of_vertices);
   if(choose_parameter(get_parameter(np, internal_np::initialize_from_uv_map), false))
@@ -144,6 +153,7 @@ Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMa
     x, choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 500),
     choose_parameter(get_parameter(np, internal_np::stopping_tolerance), 1e-9));
   if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(!x.allFinite() || ic::number_of_flipped_faces(chart, x) > 0) return ERROR_NO_1_TO_1_MAPPING;
   ic::write_vertex_uvs(mesh, surface, corner_uv, x, uvmap);
   return OK;
 }

@@ -126,8 +126,14 @@ inline double first_collapse_time(const Matrix2& Ds, const Matrix2& dDs)
   if(scale == 0.) return inf;
   if(std::abs(a) <= 1e-14 * scale) // linear
     return (b < 0.) ? -c / b : inf;
-  const double disc = b * b - 4. * a * c;
-  if(disc < 0.) return inf;
+  double disc = b * b - 4. * a * c;
+  // a uniform shrink to a point has a double root: round-off can make the
+  // discriminant slightly negative, which must not hide that collapse
+  if(disc < 0.)
+  {
+    if(disc < -1e-12 * b * b) return inf;
+    disc = 0.;
+  }
   // numerically stable roots
   const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   double t1 = q / a, t2 = (q != 0.) ? c / q : inf;
