@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libtbb-dev
-          libcgal-demo libstb-dev)
+          libcgal-demo libstb-dev doxygen)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   echo "install_dependencies: not a Debian-like system; install these yourself: ${packages[*]}" >&2
