@@ -3,11 +3,8 @@
 // start from a Tutte embedding.
 //
 // - A component that is already a disk is left alone.
-// - Otherwise the faces are joined by a dual spanning tree that crosses the
-//   longest edges first (Kruskal, maximum primal length); the edges it does
-//   not cross form a cut graph whose cutting leaves a disk. Pruning its
-//   dangling branches keeps only what the topology needs: loops through
-//   the handles and paths joining the boundary loops.
+// - Otherwise a tree-cotree decomposition cuts short loops through the
+//   handles and short paths joining the boundary loops (see cut_graph()).
 // - A closed genus-0 component needs no loop: it is opened along a path
 //   between two far-apart vertices (two Dijkstra sweeps), from which the
 //   optimization grows its seams.
@@ -15,6 +12,7 @@
 #define CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
 
 #include <algorithm>
 #include <functional>
@@ -83,17 +81,26 @@ public:
     }
   }
 
-  /// Dijkstra from one source; fills distances and the edge reaching each vertex.
   void shortest_paths(int source, std::vector<double>& distance, std::vector<int>& parent,
                       std::vector<int>& parent_edge) const
+  {
+    shortest_paths(std::vector<int>{source}, distance, parent, parent_edge);
+  }
+
+  /// Dijkstra from sources at distance 0; fills distances and the edge reaching each vertex.
+  void shortest_paths(const std::vector<int>& sources, std::vector<double>& distance,
+                      std::vector<int>& parent, std::vector<int>& parent_edge) const
   {
     distance.assign(arcs.size(), std::numeric_limits<double>::infinity());
     parent.assign(arcs.size(), -1);
     parent_edge.assign(arcs.size(), -1);
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    distance[source] = 0.;
-    queue.push({0., source});
+    for(int source : sources)
+    {
+      distance[source] = 0.;
+      queue.push({0., source});
+    }
     while(!queue.empty())
     {
       const auto [d, u] = queue.top();
@@ -141,56 +148,60 @@ void cut_diameter_path(const Surface& surface, const std::vector<int>& component
     if(edges_cut < 2 && !is_cut[arc.edge]) { is_cut[arc.edge] = 1; ++edges_cut; }
 }
 
-/// Cut graph of the faces in `component_faces` (see the file comment):
-/// sets is_cut on its interior edges.
+/// Cut graph of the faces in `component_faces` (see the file comment), by
+/// a tree-cotree decomposition with greedy short loops (Erickson and
+/// Whittlesey 2005): T = shortest-path forest from the cut mesh's boundary
+/// (or from one root on a closed surface), C = dual spanning tree keeping
+/// the longest loops uncut, and every edge in neither closes a loop
+/// (through a handle, or joining two boundary loops) that is cut along T.
 template <typename Surface>
 void cut_graph(const Surface& surface, const std::vector<int>& component_faces, std::vector<char>& is_cut)
 {
-  // dual maximum spanning tree, Kruskal on uncut interior edges by decreasing length
-  std::vector<int> dual_edges;
+  const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
+  std::vector<char> interior(surface.edges.size(), 0);
+  std::vector<int> sources;
   for(int f : component_faces)
     for(int k = 0; k < 3; ++k)
     {
-      const int fe = 3*f + k, tw = surface.twin[fe];
-      if(tw > fe && !is_cut[surface.edge_of[fe]]) dual_edges.push_back(fe);
+      const int fe = 3*f + k;
+      if(surface.twin[fe] >= 0 && !is_cut[surface.edge_of[fe]]) interior[surface.edge_of[fe]] = 1;
+      if(on_boundary[surface.edge_source(fe)]) sources.push_back(surface.edge_source(fe));
     }
-  std::sort(dual_edges.begin(), dual_edges.end(), [&](int a, int b) {
-    return surface.edge_length(a) > surface.edge_length(b); });
-  std::vector<int> parent(surface.number_of_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int x) { while(parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
-  std::vector<char> crossed(surface.edges.size(), 0);
-  for(int fe : dual_edges)
-  {
-    const int a = find(fe / 3), b = find(surface.twin[fe] / 3);
-    if(a == b) continue;
-    parent[a] = b;
-    crossed[surface.edge_of[fe]] = 1;
-  }
-  // cut graph = edges of the component not crossed; prune dangling branches
-  std::vector<char> in_graph(surface.edges.size(), 0);
+  if(sources.empty()) sources.push_back(surface.corner_vertex[component_faces.front()][0]);
+  const Edge_graph graph(surface, interior);
+  std::vector<double> distance;
+  std::vector<int> parent, parent_edge;
+  graph.shortest_paths(sources, distance, parent, parent_edge);
+  std::vector<char> in_tree(surface.edges.size(), 0);
+  for(int e : parent_edge) if(e >= 0) in_tree[e] = 1;
+
+  // cotree: Kruskal on the dual, longest loops first
+  std::vector<int> candidates; // one face-edge per interior non-tree edge
   for(int f : component_faces)
     for(int k = 0; k < 3; ++k)
-      if(!crossed[surface.edge_of[3*f + k]]) in_graph[surface.edge_of[3*f + k]] = 1;
-  const Edge_graph graph(surface, in_graph);
-  std::vector<int> degree(surface.number_of_vertices(), 0);
-  std::vector<int> leaves;
-  for(std::size_t v = 0; v < graph.arcs.size(); ++v)
-    if((degree[v] = int(graph.arcs[v].size())) == 1) leaves.push_back(int(v));
-  while(!leaves.empty())
+    {
+      const int fe = 3*f + k;
+      if(surface.twin[fe] > fe && interior[surface.edge_of[fe]] && !in_tree[surface.edge_of[fe]])
+        candidates.push_back(fe);
+    }
+  auto loop_length = [&](int fe) {
+    return distance[surface.edge_source(fe)] + surface.edge_length(fe) + distance[surface.edge_target(fe)]; };
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return loop_length(a) > loop_length(b); });
+  std::vector<int> face_parent(surface.number_of_faces());
+  std::iota(face_parent.begin(), face_parent.end(), 0);
+  auto find = [&](int x) { while(face_parent[x] != x) x = face_parent[x] = face_parent[face_parent[x]]; return x; };
+  for(int fe : candidates)
   {
-    const int v = leaves.back();
-    leaves.pop_back();
-    for(const auto& arc : graph.arcs[v])
-      if(in_graph[arc.edge])
-      {
-        in_graph[arc.edge] = 0;
-        --degree[v];
-        if(--degree[arc.to] == 1) leaves.push_back(arc.to);
-      }
+    const int a = find(fe / 3), b = find(surface.twin[fe] / 3);
+    if(a == b)
+    { // closes a loop: cut it
+      is_cut[surface.edge_of[fe]] = 1;
+      for(int end : {surface.edge_source(fe), surface.edge_target(fe)})
+        for(int v = end; parent[v] >= 0; v = parent[v]) is_cut[parent_edge[v]] = 1;
+    }
+    else
+      face_parent[a] = b;
   }
-  for(std::size_t e = 0; e < in_graph.size(); ++e)
-    if(in_graph[e]) is_cut[e] = 1;
 }
 
 /// Adds cuts so that every chart of the surface cut along `is_cut` is a
