@@ -11,6 +11,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 #define CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 
 #include <algorithm>
@@ -33,87 +34,31 @@ struct Cut_path
 /// Edge graph of one patch, on local vertex indices.
 struct Patch_graph
 {
-  struct Arc { int to, edge; double weight; };
-  std::vector<int> vertex;              // local -> surface vertex
-  std::vector<std::vector<Arc>> arcs;
-  std::vector<char> on_boundary;        // vertex lies on the cut mesh's boundary
+  Edge_graph graph;
+  std::vector<int> vertex;       // local -> surface vertex
+  std::vector<char> on_boundary; // vertex lies on the cut mesh's boundary
 };
-
-/// Dijkstra from several sources at distance 0; returns distances and the
-/// arc used to reach each vertex (-1 for sources and unreached vertices).
-inline void dijkstra(const Patch_graph& graph, const std::vector<int>& sources,
-                     std::vector<double>& distance, std::vector<int>& parent, std::vector<int>& parent_edge)
-{
-  const std::size_t n = graph.vertex.size();
-  distance.assign(n, std::numeric_limits<double>::infinity());
-  parent.assign(n, -1);
-  parent_edge.assign(n, -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for(int s : sources) { distance[s] = 0.; queue.push({0., s}); }
-  while(!queue.empty())
-  {
-    const auto [d, u] = queue.top();
-    queue.pop();
-    if(d > distance[u]) continue;
-    for(const auto& arc : graph.arcs[u])
-    {
-      const double nd = d + arc.weight;
-      if(nd < distance[arc.to])
-      {
-        distance[arc.to] = nd;
-        parent[arc.to] = u;
-        parent_edge[arc.to] = arc.edge;
-        queue.push({nd, arc.to});
-      }
-    }
-  }
-}
-
-inline int farthest(const std::vector<double>& distance)
-{
-  int best = -1;
-  for(int i = 0; i < int(distance.size()); ++i)
-    if(distance[i] < std::numeric_limits<double>::infinity() && (best < 0 || distance[i] > distance[best]))
-      best = i;
-  return best;
-}
-
-/// Path from `to` back along `parent` to a source.
-inline Cut_path trace_path(int to, const std::vector<double>& distance, const std::vector<int>& parent,
-                           const std::vector<int>& parent_edge)
-{
-  Cut_path path;
-  path.length = distance[to];
-  for(int v = to; parent[v] >= 0; v = parent[v]) path.edges.push_back(parent_edge[v]);
-  return path;
-}
 
 /// Cut tree of one patch, grown one branch at a time: each branch is the
 /// shortest path from the vertex farthest from the current sources (the cut
 /// mesh's boundary, then also the branches so far) back to them. Branches
 /// come out longest first; growth stops below `minimum_length`. A patch off
 /// the boundary starts from its diameter path (two Dijkstra sweeps).
-inline std::vector<Cut_path> patch_cut_tree(const Patch_graph& graph, double minimum_length, int max_branches)
+inline std::vector<Cut_path> patch_cut_tree(const Patch_graph& patch, double minimum_length, int max_branches)
 {
-  std::vector<double> distance;
-  std::vector<int> parent, parent_edge;
   std::vector<int> sources;
-  for(int i = 0; i < int(graph.vertex.size()); ++i)
-    if(graph.on_boundary[i]) sources.push_back(i);
+  for(int i = 0; i < int(patch.vertex.size()); ++i)
+    if(patch.on_boundary[i]) sources.push_back(i);
   if(sources.empty())
-  {
-    dijkstra(graph, {0}, distance, parent, parent_edge);
-    sources = {farthest(distance)};
-  }
+    sources = {patch.graph.shortest_paths({0}).farthest()};
   std::vector<Cut_path> branches;
   while(int(branches.size()) < max_branches)
   {
-    dijkstra(graph, sources, distance, parent, parent_edge);
-    const int tip = farthest(distance);
-    if(tip < 0 || !(distance[tip] > 0.) || distance[tip] < minimum_length) break;
-    for(int v = tip; parent[v] >= 0; v = parent[v]) sources.push_back(v);
-    branches.push_back(trace_path(tip, distance, parent, parent_edge));
+    const Shortest_paths paths = patch.graph.shortest_paths(sources);
+    const int tip = paths.farthest();
+    if(tip < 0 || !(paths.distance[tip] > 0.) || paths.distance[tip] < minimum_length) break;
+    for(int v = tip; paths.parent[v] >= 0; v = paths.parent[v]) sources.push_back(v);
+    branches.push_back({paths.path_edges(tip), paths.distance[tip]});
   }
   return branches;
 }
@@ -165,14 +110,13 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
                         const std::vector<char>& on_boundary, const std::vector<int>& faces,
                         std::vector<int>& local_index)
 {
-  Patch_graph graph;
+  Patch_graph patch;
   auto local = [&](int v) {
     if(local_index[v] < 0)
     {
-      local_index[v] = int(graph.vertex.size());
-      graph.vertex.push_back(v);
-      graph.arcs.emplace_back();
-      graph.on_boundary.push_back(on_boundary[v]);
+      local_index[v] = patch.graph.add_vertex();
+      patch.vertex.push_back(v);
+      patch.on_boundary.push_back(on_boundary[v]);
     }
     return local_index[v];
   };
@@ -184,13 +128,12 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
       if(tw >= 0 && tw > fe && std::binary_search(faces.begin(), faces.end(), tw / 3)) continue;
       const int e = surface.edge_of[fe];
       const bool boundary_edge = tw < 0 || is_cut[e];
-      const double weight = boundary_edge ? 0. : surface.edge_length(fe);
-      const int a = local(surface.edge_source(fe)), b = local(surface.edge_target(fe));
-      graph.arcs[a].push_back({b, e, weight});
-      graph.arcs[b].push_back({a, e, weight});
+      const int a = local(surface.edge_source(fe)); // sequenced: numbering must not depend on the compiler
+      const int b = local(surface.edge_target(fe));
+      patch.graph.add_edge(a, b, e, boundary_edge ? 0. : surface.edge_length(fe));
     }
-  for(int v : graph.vertex) local_index[v] = -1;
-  return graph;
+  for(int v : patch.vertex) local_index[v] = -1;
+  return patch;
 }
 
 /// Seam paths extracted from v; edges already cut are not repeated. Paths

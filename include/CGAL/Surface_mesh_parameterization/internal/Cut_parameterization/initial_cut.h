@@ -11,6 +11,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 #define CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
 
@@ -58,72 +59,21 @@ inline Chart_topology chart_topology(const Chart_mesh& mesh)
   return t;
 }
 
-class Edge_graph
+/// Edge graph on the surface's vertices, with the edges flagged in `use_edge`
+/// weighted by their 3D length.
+template <typename Surface>
+Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& use_edge)
 {
-public:
-  struct Arc { int to, edge; double length; };
-  std::vector<std::vector<Arc>> arcs; // per surface vertex
-
-  template <typename Surface>
-  Edge_graph(const Surface& surface, const std::vector<char>& use_edge)
-    : arcs(surface.number_of_vertices())
+  Edge_graph graph(surface.number_of_vertices());
+  std::vector<char> added(surface.edges.size(), 0);
+  for(int fe = 0; fe < int(surface.edge_of.size()); ++fe)
   {
-    std::vector<char> added(surface.edges.size(), 0);
-    for(int fe = 0; fe < int(surface.edge_of.size()); ++fe)
-    {
-      const int e = surface.edge_of[fe];
-      if(!use_edge[e] || added[e]) continue;
-      added[e] = 1;
-      const int a = surface.edge_source(fe), b = surface.edge_target(fe);
-      const double l = surface.edge_length(fe);
-      arcs[a].push_back({b, e, l});
-      arcs[b].push_back({a, e, l});
-    }
+    const int e = surface.edge_of[fe];
+    if(!use_edge[e] || added[e]) continue;
+    added[e] = 1;
+    graph.add_edge(surface.edge_source(fe), surface.edge_target(fe), e, surface.edge_length(fe));
   }
-
-  void shortest_paths(int source, std::vector<double>& distance, std::vector<int>& parent,
-                      std::vector<int>& parent_edge) const
-  {
-    shortest_paths(std::vector<int>{source}, distance, parent, parent_edge);
-  }
-
-  /// Dijkstra from sources at distance 0; fills distances and the edge reaching each vertex.
-  void shortest_paths(const std::vector<int>& sources, std::vector<double>& distance,
-                      std::vector<int>& parent, std::vector<int>& parent_edge) const
-  {
-    distance.assign(arcs.size(), std::numeric_limits<double>::infinity());
-    parent.assign(arcs.size(), -1);
-    parent_edge.assign(arcs.size(), -1);
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    for(int source : sources)
-    {
-      distance[source] = 0.;
-      queue.push({0., source});
-    }
-    while(!queue.empty())
-    {
-      const auto [d, u] = queue.top();
-      queue.pop();
-      if(d > distance[u]) continue;
-      for(const Arc& arc : arcs[u])
-        if(d + arc.length < distance[arc.to])
-        {
-          distance[arc.to] = d + arc.length;
-          parent[arc.to] = u;
-          parent_edge[arc.to] = arc.edge;
-          queue.push({distance[arc.to], arc.to});
-        }
-    }
-  }
-};
-
-inline int farthest_reached(const std::vector<double>& distance)
-{
-  int best = -1;
-  for(int i = 0; i < int(distance.size()); ++i)
-    if(std::isfinite(distance[i]) && (best < 0 || distance[i] > distance[best])) best = i;
-  return best;
+  return graph;
 }
 
 /// Cuts a path between two far-apart vertices of the faces in `component_faces`.
@@ -134,18 +84,16 @@ void cut_diameter_path(const Surface& surface, const std::vector<int>& component
   std::vector<char> in_component(surface.edges.size(), 0);
   for(int f : component_faces)
     for(int k = 0; k < 3; ++k) in_component[surface.edge_of[3*f + k]] = 1;
-  const Edge_graph graph(surface, in_component);
-  std::vector<double> distance;
-  std::vector<int> parent, parent_edge;
-  graph.shortest_paths(surface.corner_vertex[component_faces.front()][0], distance, parent, parent_edge);
-  const int a = farthest_reached(distance);
-  graph.shortest_paths(a, distance, parent, parent_edge);
-  const int b = farthest_reached(distance);
-  int edges_cut = 0;
-  for(int v = b; parent[v] >= 0; v = parent[v], ++edges_cut) is_cut[parent_edge[v]] = 1;
+  const Edge_graph graph = surface_edge_graph(surface, in_component);
+  const int a = graph.shortest_paths({surface.corner_vertex[component_faces.front()][0]}).farthest();
+  const Shortest_paths from_a = graph.shortest_paths({a});
+  const int b = from_a.farthest();
+  const std::vector<int> path = from_a.path_edges(b);
+  for(int e : path) is_cut[e] = 1;
   // a single cut edge opens a two-sided hole, not a disk with a usable border
-  for(const auto& arc : graph.arcs[b])
-    if(edges_cut < 2 && !is_cut[arc.edge]) { is_cut[arc.edge] = 1; ++edges_cut; }
+  if(path.size() < 2)
+    for(const auto& arc : graph.arcs(b))
+      if(!is_cut[arc.edge]) { is_cut[arc.edge] = 1; break; }
 }
 
 /// Cut graph of the faces in `component_faces` (see the file comment), by
@@ -168,12 +116,9 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
       if(on_boundary[surface.edge_source(fe)]) sources.push_back(surface.edge_source(fe));
     }
   if(sources.empty()) sources.push_back(surface.corner_vertex[component_faces.front()][0]);
-  const Edge_graph graph(surface, interior);
-  std::vector<double> distance;
-  std::vector<int> parent, parent_edge;
-  graph.shortest_paths(sources, distance, parent, parent_edge);
+  const Shortest_paths tree = surface_edge_graph(surface, interior).shortest_paths(sources);
   std::vector<char> in_tree(surface.edges.size(), 0);
-  for(int e : parent_edge) if(e >= 0) in_tree[e] = 1;
+  for(int e : tree.parent_edge) if(e >= 0) in_tree[e] = 1;
 
   // cotree: Kruskal on the dual, longest loops first
   std::vector<int> candidates; // one face-edge per interior non-tree edge
@@ -185,7 +130,7 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
         candidates.push_back(fe);
     }
   auto loop_length = [&](int fe) {
-    return distance[surface.edge_source(fe)] + surface.edge_length(fe) + distance[surface.edge_target(fe)]; };
+    return tree.distance[surface.edge_source(fe)] + surface.edge_length(fe) + tree.distance[surface.edge_target(fe)]; };
   std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return loop_length(a) > loop_length(b); });
   std::vector<int> face_parent(surface.number_of_faces());
   std::iota(face_parent.begin(), face_parent.end(), 0);
@@ -197,7 +142,7 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
     { // closes a loop: cut it
       is_cut[surface.edge_of[fe]] = 1;
       for(int end : {surface.edge_source(fe), surface.edge_target(fe)})
-        for(int v = end; parent[v] >= 0; v = parent[v]) is_cut[parent_edge[v]] = 1;
+        for(int e : tree.path_edges(end)) is_cut[e] = 1;
     }
     else
       face_parent[a] = b;
