@@ -4,6 +4,7 @@
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_TERM_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
 
 #include <algorithm>
@@ -20,6 +21,10 @@ class Distortion_term : public Energy_term
   const std::vector<double>& weights_; // w_f, read at every evaluation
   std::vector<Eigen::Matrix<double, 4, 6>> jacobian_operators_;
   int first_element_ = 0;
+  // per-face results, computed in parallel and summed in face order
+  mutable std::vector<double> face_energy_;
+  mutable std::vector<Eigen::Matrix<double, 6, 1>> face_gradient_;
+  mutable std::vector<Eigen::Matrix<double, 6, 6>> face_hessian_;
 
 public:
   Distortion_term(const Chart_mesh& mesh, const std::vector<double>& weights)
@@ -50,34 +55,38 @@ public:
 
   double value(const UV_vector& x) const override
   {
+    const std::size_t n = mesh_.number_of_faces();
+    face_energy_.resize(n);
+    parallel_for(n, [&](std::size_t f) {
+      face_energy_[f] = weights_[f] * mesh_.area[f] * symmetric_dirichlet(mesh_.jacobian(x, f));
+    });
     double energy = 0.;
-    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
-    {
-      if(weights_[f] == 0.) continue;
-      energy += weights_[f] * mesh_.area[f] * symmetric_dirichlet(mesh_.jacobian(x, f));
-    }
+    for(double e : face_energy_) energy += e;
     return energy;
   }
 
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
   {
-    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
-    {
+    const std::size_t n = mesh_.number_of_faces();
+    face_gradient_.resize(n);
+    face_hessian_.resize(n);
+    parallel_for(n, [&](std::size_t f) {
       const double w = weights_[f] * mesh_.area[f];
-      if(w == 0.) continue;
       const Matrix2 J = mesh_.jacobian(x, f);
       const auto& B = jacobian_operators_[f];
-      const Eigen::Matrix<double, 6, 1> g = w * (B.transpose() * symmetric_dirichlet_gradient(J));
-      const Eigen::Matrix<double, 6, 6> H =
-        w * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
+      face_gradient_[f] = w * (B.transpose() * symmetric_dirichlet_gradient(J));
+      face_hessian_[f] = w * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
+    });
+    for(std::size_t f = 0; f < n; ++f)
+    {
       const auto& t = mesh_.faces[f];
       for(int k = 0; k < 3; ++k)
       {
-        gradient[2*t[k]] += g[2*k];
-        gradient[2*t[k]+1] += g[2*k+1];
+        gradient[2*t[k]] += face_gradient_[f][2*k];
+        gradient[2*t[k]+1] += face_gradient_[f][2*k+1];
       }
-      hessian.add(first_element_ + int(f), H);
+      hessian.add(first_element_ + int(f), face_hessian_[f]);
     }
   }
 

@@ -1,0 +1,36 @@
+// Runs an index loop on all cores when TBB is linked (CGAL_LINKED_WITH_TBB),
+// serially otherwise. Callers write to per-index slots only, so results do
+// not depend on the number of threads.
+#ifndef CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
+#define CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
+
+#include <cstddef>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+template <typename Function>
+void parallel_for(std::size_t n, const Function& function)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for(std::size_t i = range.begin(); i != range.end(); ++i) function(i);
+                    });
+#else
+  for(std::size_t i = 0; i < n; ++i) function(i);
+#endif
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
