@@ -540,6 +540,71 @@ shortest_edge_path(const Mesh& mesh, typename boost::graph_traits<Mesh>::vertex_
   return path;
 }
 
+// ---------------------------------------------------------------------------
+// More shapes (for the cut-and-parameterize tests)
+
+/// Polar disk of radius 1 in the plane z = 0 with a tall narrow bump at its
+/// center: z = height · exp(-(ρ / width)²). The rings are denser near the
+/// center (ρ = r^1.5) so the bump is resolved. A disk with one obvious place
+/// to cut: the bump.
+inline Soup spike_disk_soup(int rings, int sectors, double height = 1.5, double width = 0.2)
+{
+  return polar_disk_soup(rings, sectors, [=](double r, double t) {
+    const double rho = std::pow(r, 1.5);
+    return Soup::Point{rho * std::cos(t), rho * std::sin(t),
+                       height * std::exp(-(rho / width) * (rho / width))};
+  });
+}
+
+/// Cap of the unit sphere around the pole +z, from the pole to the polar
+/// angle `angle` (π/2: the hemisphere; close to π: a deep bowl whose rim is
+/// narrower than its belly). A disk, far from developable for large angles.
+inline Soup sphere_cap_soup(int rings, int sectors, double angle)
+{
+  return polar_disk_soup(rings, sectors, [angle](double r, double t) {
+    const double phi = angle * r;
+    return Soup::Point{std::sin(phi) * std::cos(t), std::sin(phi) * std::sin(t), std::cos(phi)};
+  });
+}
+
+/// Closed surface enclosing the slab `sheet` × [-thickness/2, thickness/2]:
+/// the sheet (triangles, oriented counterclockwise seen from +z, lying in a
+/// plane z = const) is copied to the top and, reversed, to the bottom, and
+/// every border edge gets a wall of two triangles. Outward oriented. A flat
+/// sheet with b border cycles gives a closed surface of genus b - 1.
+inline Soup thickened_soup(const Soup& sheet, double thickness)
+{
+  Soup s;
+  const std::size_t n = sheet.points.size();
+  for(const auto& p : sheet.points) s.add_point(p[0], p[1], p[2] + 0.5 * thickness);
+  for(const auto& p : sheet.points) s.add_point(p[0], p[1], p[2] - 0.5 * thickness);
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  for(const auto& f : sheet.faces)
+  {
+    if(f.size() != 3) throw std::invalid_argument("thickened_soup: triangles only");
+    s.add_triangle(f[0], f[1], f[2]);
+    s.add_triangle(n + f[0], n + f[2], n + f[1]);
+    for(int k = 0; k < 3; ++k) ++directed[{f[k], f[(k + 1) % 3]}];
+  }
+  for(const auto& f : sheet.faces)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t a = f[k], b = f[(k + 1) % 3];
+      if(directed.count({b, a})) continue; // interior edge
+      // top has a -> b, bottom has b' -> a': the wall has b -> a and a' -> b'
+      s.add_triangle(b, a, n + a);
+      s.add_triangle(b, n + a, n + b);
+    }
+  return s;
+}
+
+/// Closed genus-2 surface: a thickened n × n square plate with two square
+/// holes (a "figure eight"), see thickened_soup() and disk_with_holes_soup().
+inline Soup double_torus_soup(int n = 8, double thickness = 0.1)
+{
+  return thickened_soup(disk_with_holes_soup(n, 2), thickness);
+}
+
 } // namespace cut_test
 
 #endif

@@ -1,0 +1,463 @@
+// cut_and_parameterize() end to end on disks with an obvious place to cut (a
+// cone's apex, a hemisphere, a tall narrow spike): seams appear there, E_d
+// drops well below the best map of the uncut disk, the atlas is valid (see
+// cut_result_checks.h) and CGAL's own parameterizers accept the seam mesh.
+// Then the contract of the options: scale invariance, determinism, user
+// seams kept, per-face λ, progress callback and cancellation, invalid
+// parameters, several passes.
+#include "cut_result_checks.h"
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/make_seam_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+
+#include <iomanip>
+#include <map>
+#include <set>
+#include <string>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using namespace cut_test;
+
+namespace {
+
+template <typename Mesh>
+using vertex_t = typename boost::graph_traits<Mesh>::vertex_descriptor;
+template <typename Mesh>
+using edge_t = typename boost::graph_traits<Mesh>::edge_descriptor;
+template <typename Mesh>
+using face_t = typename boost::graph_traits<Mesh>::face_descriptor;
+
+/// E_d of the best flip-free map of the uncut disk (symmetric Dirichlet).
+template <typename Mesh>
+double uncut_distortion(const Mesh& mesh)
+{
+  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  return SMP::distortion_energy(mesh, uv);
+}
+
+/// Vertices of seam edges.
+template <typename Mesh>
+std::set<vertex_t<Mesh>> seam_vertices(const Mesh& mesh, const Cut_run<Mesh>& run)
+{
+  std::set<vertex_t<Mesh>> result;
+  for(auto e : edges(mesh))
+    if(run.is_seam(e))
+    {
+      result.insert(source(e, mesh));
+      result.insert(target(e, mesh));
+    }
+  return result;
+}
+
+/// Builds the seam mesh of the run's seams and flattens it with CGAL's LSCM
+/// and ARAP from its longest border: both must succeed with finite UVs on
+/// every corner.
+template <typename Mesh>
+void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<Mesh>& run)
+{
+  auto sem = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+  auto svm = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
+  for(auto e : edges(mesh)) put(sem, e, run.is_seam(e));
+  auto seam_mesh = SMP::make_seam_mesh(mesh, sem, svm); // CGAL's parameterize() wants it non-const
+  using Seam_mesh = decltype(seam_mesh);
+  const long chi = long(num_vertices(seam_mesh)) - long(num_edges(seam_mesh)) + long(num_faces(seam_mesh));
+  CHECK_EQ(chi, 1L);
+  CHECK_EQ(number_of_border_cycles(seam_mesh), std::size_t(1));
+  const auto border = PMP::longest_border(seam_mesh).first;
+  REQUIRE(border != boost::graph_traits<Seam_mesh>::null_halfedge());
+  // the UVs of cut_and_parameterize are a valid vertex UV map of the seam mesh
+  auto& r = const_cast<Cut_run<Mesh>&>(run);
+  CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, r.uvs()), std::size_t(0));
+  CHECK_REL(SMP::distortion_energy(seam_mesh, r.uvs()), run.result.distortion, 1e-9);
+  {
+    auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
+    const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), border, uv);
+    CHECK_MSG(status == SMP::OK, "LSCM on the seam mesh: " << SMP::error_message(status));
+    std::size_t non_finite = 0;
+    for(auto h : halfedges(mesh))
+      if(!is_border(h, mesh))
+      {
+        const Point_2 p = get(uv, target(typename boost::graph_traits<Seam_mesh>::halfedge_descriptor(h), seam_mesh));
+        if(!std::isfinite(p.x()) || !std::isfinite(p.y())) ++non_finite;
+      }
+    CHECK_EQ(non_finite, std::size_t(0));
+  }
+  {
+    auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
+    const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::ARAP_parameterizer_3<Seam_mesh>(), border, uv);
+    CHECK_MSG(status == SMP::OK, "ARAP on the seam mesh: " << SMP::error_message(status));
+  }
+}
+
+void print(const std::string& what, const SMP::Cut_and_parameterize_result& r, double uncut)
+{
+  std::cout << std::defaultfloat << std::setprecision(6) << "    " << what << ": " << r.number_of_seam_edges
+            << " seam edges, " << r.number_of_charts << " charts, E_d " << r.distortion << " (uncut " << uncut
+            << "), E_s " << r.seam_length << std::endl;
+}
+
+// A straight seam from the apex to the border unrolls this cone isometrically (E_d = 4).
+const double cone_height = 6.;
+Soup tall_cone() { return cone_soup(12, 32, 1., cone_height); } // 736 faces, apex first
+Soup bowl() { return sphere_cap_soup(12, 36, 0.9 * pi); }       // 828 faces, deep bowl
+Soup spike() { return spike_disk_soup(16, 32, 1.5, 0.2); } // 992 faces
+
+} // namespace
+
+// --- obvious places to cut --------------------------------------------------
+
+CUT_TYPED_TEST(cone_is_cut_to_its_apex, Mesh_types)
+{
+  const Soup soup = tall_cone();
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  const vertex_t<TestType> apex = vertex_of[0];
+  REQUIRE(std::abs(get(get(CGAL::vertex_point, mesh), apex).z() - cone_height) < 1e-12);
+  const double uncut = uncut_distortion(mesh);
+
+  Cut_run<TestType> run(mesh);
+  run.run();
+  const auto report = check_cut_result(mesh, run);
+  print("cone", run.result, uncut);
+  REQUIRE(report.valid);
+  CHECK(run.result.number_of_seam_edges > 0);
+  // a seam reaches the apex or its one-ring (the apex is the only curved point)
+  const auto on_seam = seam_vertices(mesh, run);
+  bool near_apex = on_seam.count(apex) > 0;
+  for(auto w : vertices_around_target(halfedge(apex, mesh), mesh)) near_apex = near_apex || on_seam.count(w) > 0;
+  CHECK_MSG(near_apex, "no seam vertex in the apex's one-ring");
+  // and it is connected to the border (else the chart would not be a disk,
+  // checked above); at least half of the excess distortion goes away (a
+  // straight seam from the apex to the border gives E_d = 4)
+  CHECK_MSG(run.result.distortion < uncut - 0.5 && run.result.distortion < 0.5 * (uncut + 4.),
+            "E_d " << run.result.distortion << " vs uncut " << uncut);
+  CHECK(run.result.initial_distortion > run.result.distortion);
+  check_cgal_parameterizers_accept_the_seams(mesh, run);
+}
+
+CUT_TYPED_TEST(deep_bowl_is_cut_from_its_border, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  const double uncut = uncut_distortion(mesh);
+  Cut_run<TestType> run(mesh);
+  run.run();
+  const auto report = check_cut_result(mesh, run);
+  print("deep bowl", run.result, uncut);
+  REQUIRE(report.valid);
+  CHECK(run.result.number_of_seam_edges > 0);
+  // seams of a disk whose chart stays a disk start at the border
+  bool touches_border = false;
+  for(auto v : seam_vertices(mesh, run)) touches_border = touches_border || is_border(v, mesh);
+  CHECK(touches_border);
+  CHECK_MSG(run.result.distortion < uncut - 0.3, "E_d " << run.result.distortion << " vs uncut " << uncut);
+  if(report.number_of_charts == 1) check_cgal_parameterizers_accept_the_seams(mesh, run);
+}
+
+CUT_TYPED_TEST(spike_is_cut, Mesh_types)
+{
+  const double height = 1.5;
+  const Soup soup = spike();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  const double uncut = uncut_distortion(mesh);
+  Cut_run<TestType> run(mesh);
+  run.run();
+  const auto report = check_cut_result(mesh, run);
+  print("spike", run.result, uncut);
+  REQUIRE(report.valid);
+  // seams climb the spike: some seam vertex is above half its height
+  double highest = -1.;
+  for(auto v : seam_vertices(mesh, run)) highest = (std::max)(highest, get(get(CGAL::vertex_point, mesh), v).z());
+  CHECK_MSG(highest > 0.5 * height, "highest seam vertex at z = " << highest);
+  CHECK_MSG(run.result.distortion < uncut - 0.5, "E_d " << run.result.distortion << " vs uncut " << uncut);
+  if(report.number_of_charts == 1) check_cgal_parameterizers_accept_the_seams(mesh, run);
+}
+
+// --- contract of the options -------------------------------------------------
+
+CUT_TYPED_TEST(scale_invariance, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Cut_run<TestType> run(mesh);
+  run.run();
+  REQUIRE(run.result.ok());
+  for(const double s : {1e-3, 1e3})
+  {
+    Scoped_context ctx("scale " + to_text(s));
+    Soup scaled = soup;
+    scaled.scale(s);
+    TestType other;
+    build_mesh(scaled, other);
+    Cut_run<TestType> other_run(other);
+    other_run.run();
+    check_cut_result(other, other_run);
+    CHECK(other_run.seam_vector() == run.seam_vector());
+    CHECK_EQ(other_run.result.number_of_seam_edges, run.result.number_of_seam_edges);
+    CHECK_REL(other_run.result.distortion, run.result.distortion, 1e-6);
+    CHECK_REL(other_run.result.seam_length, run.result.seam_length, 1e-6);
+  }
+}
+
+CUT_TYPED_TEST(determinism, Mesh_types)
+{
+  const Soup soup = spike();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Cut_run<TestType> a(mesh), b(mesh);
+  a.run();
+  b.run();
+  REQUIRE(a.result.ok() && b.result.ok());
+  CHECK(a.seam_vector() == b.seam_vector());
+  const auto ua = a.uv_vector(), ub = b.uv_vector();
+  REQUIRE_EQ(ua.size(), ub.size());
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < ua.size(); ++i)
+    if(!(ua[i].x() == ub[i].x() && ua[i].y() == ub[i].y())) ++differ;
+  CHECK_EQ(differ, std::size_t(0));
+  CHECK(a.result.distortion == b.result.distortion);
+  CHECK_EQ(a.result.newton_iterations, b.result.newton_iterations);
+}
+
+CUT_TYPED_TEST(user_seams_are_kept, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  // a path from the border vertex of smallest x to a vertex near the pole
+  vertex_t<TestType> from = *vertices(mesh).begin(), to = from;
+  bool found_border = false;
+  for(auto v : vertices(mesh))
+  {
+    if(is_border(v, mesh) && (!found_border || get(vpm, v).x() < get(vpm, from).x()))
+    {
+      from = v;
+      found_border = true;
+    }
+    const auto p = get(vpm, v), q = get(vpm, to);
+    if(std::abs(p.z() - 0.95) + std::abs(p.y()) < std::abs(q.z() - 0.95) + std::abs(q.y())) to = v;
+  }
+  REQUIRE(is_border(from, mesh));
+  const auto user = shortest_edge_path(mesh, from, to);
+  REQUIRE(user.size() >= 5);
+  Cut_run<TestType> run(mesh);
+  for(auto e : user) run.seam_storage[e] = true;
+  run.run();
+  check_cut_result(mesh, run);
+  std::size_t kept = 0;
+  for(auto e : user) kept += run.is_seam(e) ? 1 : 0;
+  CHECK_EQ(kept, user.size());
+  CHECK(run.result.number_of_seam_edges >= user.size());
+
+  // a user seam on the border is not a seam (seams are interior edges)
+  Cut_run<TestType> border_run(mesh);
+  const auto border_edge = edge(halfedge(from, mesh), mesh);
+  REQUIRE(is_border(border_edge, mesh));
+  border_run.seam_storage[border_edge] = true;
+  border_run.run();
+  check_cut_result(mesh, border_run);
+  CHECK(!border_run.is_seam(border_edge));
+}
+
+CUT_TYPED_TEST(face_lambda_map_keeps_seams_out_of_a_region, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  Cut_run<TestType> plain(mesh);
+  plain.run();
+  check_cut_result(mesh, plain);
+  REQUIRE(plain.result.number_of_seam_edges > 0);
+  // mean direction (angle around the axis) of the seams found
+  double sx = 0., sy = 0.;
+  for(auto v : seam_vertices(mesh, plain))
+  {
+    sx += get(vpm, v).x();
+    sy += get(vpm, v).y();
+  }
+  const double direction = std::atan2(sy, sx);
+  // protect the sector of ±60° around it, away from the pole
+  auto region = get(CGAL::dynamic_face_property_t<bool>(), mesh);
+  auto lambda = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  std::size_t protected_faces = 0;
+  for(auto f : faces(mesh))
+  {
+    double cx = 0., cy = 0.;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      cx += get(vpm, v).x() / 3.;
+      cy += get(vpm, v).y() / 3.;
+    }
+    double d = std::atan2(cy, cx) - direction;
+    while(d > pi) d -= 2. * pi;
+    while(d < -pi) d += 2. * pi;
+    const bool in = std::abs(d) < pi / 3. && std::hypot(cx, cy) > 0.25;
+    put(region, f, in);
+    put(lambda, f, in ? 100. : 1.);
+    protected_faces += in ? 1 : 0;
+  }
+  REQUIRE(protected_faces > 50);
+  auto seams_in_region = [&](const Cut_run<TestType>& run) {
+    std::size_t n = 0;
+    for(auto e : edges(mesh))
+    {
+      if(!run.is_seam(e)) continue;
+      const auto h = halfedge(e, mesh);
+      if(get(region, face(h, mesh)) || get(region, face(opposite(h, mesh), mesh))) ++n;
+    }
+    return n;
+  };
+  const std::size_t before = seams_in_region(plain);
+  CHECK(before > 0);
+  Cut_run<TestType> weighted(mesh);
+  weighted.run(SMP::parameters::face_lambda_map(lambda));
+  check_cut_result(mesh, weighted);
+  const std::size_t after = seams_in_region(weighted);
+  std::cout << "    seam edges in the protected region: " << before << " without the map, " << after
+            << " with it (" << weighted.result.number_of_seam_edges << " in all)" << std::endl;
+  CHECK(after < before);
+  CHECK(weighted.result.number_of_seam_edges > 0); // the bowl still needs a cut, elsewhere
+}
+
+CUT_TYPED_TEST(progress_callback_and_cancel, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  using Progress = SMP::Cut_and_parameterize_progress;
+  struct Call { std::string phase; int pass, alternation, per_pass; double epsilon; };
+  std::vector<Call> calls;
+  const std::function<bool(const Progress&)> record = [&](const Progress& p) {
+    calls.push_back({p.phase, p.pass, p.alternation, p.alternations_per_pass, p.epsilon});
+    return true;
+  };
+  Cut_run<TestType> run(mesh);
+  run.run(SMP::parameters::progress_callback(record, SMP::parameters::number_of_passes(2)));
+  check_cut_result(mesh, run);
+  REQUIRE(!calls.empty());
+  CHECK_EQ(calls.front().phase, std::string("initialize"));
+  CHECK_EQ(calls.back().phase, std::string("final"));
+  // defaults: ε = 0.1, 0.05, 0.025, 0.0125 (> 0.01), 3 alternations each
+  std::map<int, std::vector<Call>> alternations;
+  for(const Call& c : calls)
+  {
+    CHECK_EQ(c.per_pass, 12);
+    if(c.phase == "alternate") alternations[c.pass].push_back(c);
+  }
+  CHECK(alternations.size() >= 1);
+  for(const auto& entry : alternations)
+  {
+    Scoped_context ctx("pass " + std::to_string(entry.first));
+    const auto& list = entry.second;
+    CHECK_EQ(list.size(), std::size_t(12));
+    for(std::size_t i = 0; i < list.size(); ++i)
+    {
+      CHECK_EQ(list[i].alternation, int(i) + 1); // increasing, from 1
+      if(i > 0) CHECK(list[i].epsilon <= list[i - 1].epsilon);
+    }
+    if(!list.empty())
+    {
+      CHECK_NEAR(list.front().epsilon, 0.1, 1e-15);
+      CHECK_NEAR(list.back().epsilon, 0.0125, 1e-15);
+    }
+  }
+
+  // returning false stops the run; the outputs are left as they were
+  for(const int stop_at : {0, 3})
+  {
+    Scoped_context ctx("cancel after " + std::to_string(stop_at) + " alternations");
+    int seen = 0;
+    const std::function<bool(const Progress&)> cancel = [&](const Progress& p) {
+      ++seen;
+      return !(std::string(p.phase) == "initialize" ? stop_at == 0 : p.alternation >= stop_at);
+    };
+    Cut_run<TestType> canceled(mesh);
+    const auto some_edge = *edges(mesh).begin();
+    canceled.seam_storage[some_edge] = false;
+    for(auto& entry : canceled.uv_storage) entry.second = Point_2(-7., 13.);
+    canceled.run(SMP::parameters::progress_callback(cancel));
+    CHECK_EQ(canceled.result.error, SMP::ERROR_CANCELED);
+    CHECK_EQ(seen, stop_at == 0 ? 1 : stop_at + 1);
+    CHECK_EQ(canceled.number_of_seam_edges(), std::size_t(0));
+    std::size_t changed = 0;
+    for(const auto& entry : canceled.uv_storage) changed += entry.second != Point_2(-7., 13.) ? 1 : 0;
+    CHECK_EQ(changed, std::size_t(0));
+  }
+}
+
+CUT_TYPED_TEST(invalid_parameters, Mesh_types)
+{
+  const Soup soup = cone_soup(4, 12);
+  TestType mesh;
+  build_mesh(soup, mesh);
+  namespace P = SMP::parameters;
+  auto expect_wrong = [&](const auto& np, const char* what) {
+    Scoped_context ctx(what);
+    Cut_run<TestType> run(mesh);
+    for(auto& entry : run.uv_storage) entry.second = Point_2(-7., 13.);
+    run.run(np);
+    CHECK_EQ(run.result.error, SMP::ERROR_WRONG_PARAMETER);
+    CHECK_EQ(run.number_of_seam_edges(), std::size_t(0));
+    std::size_t changed = 0;
+    for(const auto& entry : run.uv_storage) changed += entry.second != Point_2(-7., 13.) ? 1 : 0;
+    CHECK_EQ(changed, std::size_t(0));
+  };
+  expect_wrong(P::lambda(-1.), "lambda -1");
+  expect_wrong(P::lambda(0.), "lambda 0");
+  expect_wrong(P::epsilon_start(0.01, P::epsilon_end(0.1)), "epsilon_end > epsilon_start");
+  expect_wrong(P::epsilon_end(-0.01), "epsilon_end < 0");
+  expect_wrong(P::iterations_per_epsilon(0), "iterations_per_epsilon 0");
+  expect_wrong(P::gamma(-1e-7), "gamma < 0");
+  expect_wrong(P::number_of_passes(-1), "passes -1");
+  expect_wrong(P::minimum_relative_cut_length(1.5), "minimum_relative_cut_length 1.5");
+  auto negative = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  for(auto f : faces(mesh)) put(negative, f, 1.);
+  put(negative, *faces(mesh).begin(), -2.);
+  expect_wrong(P::face_lambda_map(negative), "a negative face lambda");
+  // and a valid set of the same options works
+  Cut_run<TestType> ok(mesh);
+  ok.run(P::lambda(0.5, P::epsilon_start(0.2, P::epsilon_end(0.02, P::iterations_per_epsilon(2)))));
+  check_cut_result(mesh, ok);
+}
+
+CUT_TYPED_TEST(two_passes_extend_the_seams_of_one, Mesh_types)
+{
+  const Soup soup = bowl();
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Cut_run<TestType> one(mesh), two(mesh);
+  one.run(SMP::parameters::number_of_passes(1));
+  two.run(SMP::parameters::number_of_passes(2));
+  check_cut_result(mesh, one);
+  check_cut_result(mesh, two);
+  print("1 pass", one.result, 0.);
+  print("2 passes", two.result, 0.);
+  // the first pass of a 2-pass run is the 1-pass run: its seams are kept
+  std::size_t lost = 0;
+  for(auto e : edges(mesh))
+    if(one.is_seam(e) && !two.is_seam(e)) ++lost;
+  CHECK_EQ(lost, std::size_t(0));
+  CHECK(two.result.number_of_seam_edges >= one.result.number_of_seam_edges);
+  CHECK_MSG(two.result.distortion <= one.result.distortion + 1e-3,
+            "E_d 2 passes " << two.result.distortion << " vs 1 pass " << one.result.distortion);
+  // no pass: only the initial cut (none for a disk), i.e. the uncut optimum
+  Cut_run<TestType> none(mesh);
+  none.run(SMP::parameters::number_of_passes(0));
+  check_cut_result(mesh, none);
+  CHECK_EQ(none.result.number_of_seam_edges, std::size_t(0));
+  CHECK_REL(none.result.distortion, uncut_distortion(mesh), 1e-3);
+}
+
+CUT_TEST_MAIN()

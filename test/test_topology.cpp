@@ -1,0 +1,240 @@
+// cut_and_parameterize() on inputs of any topology: closed genus 0, 1 and 2,
+// a disk with several holes, several components, a closed mesh next to a
+// disk, and meshes of CGAL's data set. Every result must be a valid atlas:
+// finite, flip-free UVs, one UV per corner of the mesh cut along the seams,
+// every chart a topological disk whose boundary is made of seams and input
+// border edges only, charts side by side without overlap, and statistics
+// that match the outputs (see cut_result_checks.h, which recomputes all of
+// this from the outputs with the mesh's halfedge structure).
+//
+// The CGAL data-set cases are registered only when CGAL_DATA_DIR is set
+// (CTest sets it when CGAL's data was found, see test/CMakeLists.txt).
+#include "cut_result_checks.h"
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cstdlib>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using namespace cut_test;
+
+namespace {
+
+/// Number of connected components of the mesh (through faces sharing edges).
+template <typename Mesh>
+std::size_t number_of_face_components(const Mesh& mesh)
+{
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  std::unordered_map<face_descriptor, bool> seen;
+  std::size_t n = 0;
+  for(face_descriptor f : faces(mesh))
+  {
+    if(seen[f]) continue;
+    ++n;
+    std::vector<face_descriptor> stack{f};
+    seen[f] = true;
+    while(!stack.empty())
+    {
+      const face_descriptor g = stack.back();
+      stack.pop_back();
+      for(auto h : halfedges_around_face(halfedge(g, mesh), mesh))
+      {
+        const auto o = opposite(h, mesh);
+        if(is_border(o, mesh)) continue;
+        const face_descriptor k = face(o, mesh);
+        if(!seen[k]) { seen[k] = true; stack.push_back(k); }
+      }
+    }
+  }
+  return n;
+}
+
+struct Expected
+{
+  long genus = 0;              // of the input (checked when it has one component)
+  std::size_t components = 1;
+  double max_distortion = std::numeric_limits<double>::infinity();
+};
+
+/// Runs cut_and_parameterize with the defaults and checks the atlas.
+template <typename Mesh>
+Chart_report<Mesh> unwrap_and_check(const Mesh& mesh, const Expected& expected)
+{
+  REQUIRE(CGAL::is_triangle_mesh(mesh));
+  const std::size_t components = number_of_face_components(mesh);
+  CHECK_EQ(components, expected.components);
+  if(expected.components == 1) CHECK_EQ(genus(mesh), expected.genus);
+
+  Cut_run<Mesh> run(mesh);
+  run.run();
+  const Chart_report<Mesh> report = check_cut_result(mesh, run);
+  // at least one chart per component; a component that is not a disk needs seams
+  CHECK(report.number_of_charts >= components);
+  if(expected.genus > 0 || CGAL::is_closed(mesh)) CHECK(run.result.number_of_seam_edges > 0);
+  CHECK_MSG(run.result.distortion < expected.max_distortion,
+            "E_d " << run.result.distortion << " >= " << expected.max_distortion);
+  std::cout << std::defaultfloat << std::setprecision(6) << "    " << num_faces(mesh) << " faces, " << report.number_of_charts << " charts, "
+            << run.result.number_of_seam_edges << " seam edges, E_d " << run.result.distortion
+            << " (initial " << run.result.initial_distortion << "), E_s " << run.result.seam_length
+            << std::endl;
+  return report;
+}
+
+template <typename Mesh>
+Chart_report<Mesh> unwrap_soup(const Soup& soup, const Expected& expected)
+{
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  return unwrap_and_check(mesh, expected);
+}
+
+} // namespace
+
+CUT_TYPED_TEST(closed_sphere, Mesh_types)
+{
+  Expected e;
+  e.genus = 0;
+  e.max_distortion = 5.;
+  unwrap_soup<TestType>(sphere_soup(6), e);
+}
+
+CUT_TYPED_TEST(closed_torus, Mesh_types)
+{
+  Expected e;
+  e.genus = 1;
+  e.max_distortion = 5.;
+  unwrap_soup<TestType>(torus_soup(32, 12), e);
+}
+
+CUT_TYPED_TEST(double_torus, Mesh_types)
+{
+  const Soup soup = double_torus_soup(8, 0.1);
+  {
+    // the generator: closed, genus 2
+    TestType mesh;
+    build_mesh(soup, mesh);
+    CHECK(CGAL::is_closed(mesh));
+    CHECK_EQ(number_of_border_cycles(mesh), std::size_t(0));
+    CHECK_EQ(euler_characteristic(mesh), -2L);
+  }
+  Expected e;
+  e.genus = 2;
+  unwrap_soup<TestType>(soup, e);
+}
+
+CUT_TYPED_TEST(disk_with_three_holes, Mesh_types)
+{
+  const Soup soup = disk_with_holes_soup(12, 3);
+  TestType mesh;
+  build_mesh(soup, mesh);
+  REQUIRE_EQ(number_of_border_cycles(mesh), std::size_t(4));
+  Expected e;
+  e.genus = 0;
+  unwrap_and_check(mesh, e);
+}
+
+CUT_TYPED_TEST(two_disjoint_disks, Mesh_types)
+{
+  Expected e;
+  e.components = 2;
+  const auto report = unwrap_soup<TestType>(two_components_soup(8), e);
+  CHECK(report.number_of_charts >= 2);
+}
+
+CUT_TYPED_TEST(closed_sphere_next_to_a_disk, Mesh_types)
+{
+  Soup soup = sphere_soup(4);
+  Soup disk = hemisphere_soup(6, 16);
+  disk.translate(3., 0., 0.);
+  soup.append(disk);
+  Expected e;
+  e.components = 2;
+  unwrap_soup<TestType>(soup, e);
+}
+
+CUT_TYPED_TEST(torus_with_user_seams_that_split_it, Mesh_types)
+{
+  // user seams along two meridians cut the torus into two annuli: the
+  // result must still be disks (the method adds what is missing)
+  const int nu = 24, nv = 10;
+  const Soup soup = torus_soup(nu, nv);
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  std::vector<std::pair<std::size_t, std::size_t>> meridians;
+  for(int i : {0, nu / 2})
+    for(int j = 0; j < nv; ++j)
+      meridians.emplace_back(std::size_t(i * nv + j), std::size_t(i * nv + (j + 1) % nv));
+  const auto user = soup_edges(mesh, vertex_of, meridians);
+  Cut_run<TestType> run(mesh);
+  for(auto ed : user) run.seam_storage[ed] = true;
+  run.run();
+  const auto report = check_cut_result(mesh, run);
+  CHECK(report.number_of_charts >= 2);
+  for(auto ed : user) CHECK(run.is_seam(ed));
+}
+
+// --- CGAL's data set ---------------------------------------------------------
+
+namespace {
+
+template <typename Mesh>
+void data_mesh_case(const std::string& name, const Expected& expected)
+{
+  Scoped_context ctx(name);
+  Mesh mesh;
+  const std::string path = CGAL::data_file_path("meshes/" + name);
+  REQUIRE_MSG(CGAL::IO::read_polygon_mesh(path, mesh), "cannot read " << path);
+  REQUIRE(num_faces(mesh) > 0);
+  unwrap_and_check(mesh, expected);
+}
+
+template <typename Mesh>
+void register_data_cases()
+{
+  const std::string type = Type_name<Mesh>::get();
+  register_test("cgal_data_elephant<" + type + ">", [] {
+    Expected e;
+    e.genus = 3; // closed
+    data_mesh_case<Mesh>("elephant.off", e);
+  });
+  register_test("cgal_data_knot1<" + type + ">", [] {
+    Expected e;
+    e.genus = 1;
+    data_mesh_case<Mesh>("knot1.off", e);
+  });
+  register_test("cgal_data_blobby_3cc<" + type + ">", [] {
+    Expected e;
+    e.components = 3;
+    data_mesh_case<Mesh>("blobby_3cc.off", e);
+  });
+  register_test("cgal_data_holes<" + type + ">", [] {
+    Expected e;
+    e.genus = 0; // 7 holes
+    data_mesh_case<Mesh>("holes.off", e);
+  });
+  register_test("cgal_data_eight<" + type + ">", [] {
+    Expected e;
+    e.genus = 2;
+    data_mesh_case<Mesh>("eight.off", e);
+  });
+  register_test("cgal_data_pipe<" + type + ">", [] {
+    Expected e;
+    e.genus = 1; // closed
+    data_mesh_case<Mesh>("pipe.off", e);
+  });
+}
+
+const bool data_cases_registered = [] {
+  if(std::getenv("CGAL_DATA_DIR") == nullptr)
+  {
+    std::cout << "CGAL_DATA_DIR not set: the CGAL data-set cases are not run" << std::endl;
+    return false;
+  }
+  register_data_cases<Surface_mesh>();
+  register_data_cases<Polyhedron>();
+  return true;
+}();
+
+} // namespace
+
+CUT_TEST_MAIN()
