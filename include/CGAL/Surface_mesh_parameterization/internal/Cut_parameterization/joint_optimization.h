@@ -85,13 +85,17 @@ double mean_edge_length(const Surface& surface)
   return n > 0 ? sum / n : 1.;
 }
 
-/// Cuts the edges of `paths`, rebuilds the chart mesh and carries the UVs
-/// over: both sides of a new cut start where the uncut vertex was.
+/// Cuts the edges of `paths`, then joins any closed slit (a path that does
+/// not reach the boundary) to the boundary by a short path, so every chart
+/// stays a topological disk (make_disks()). Rebuilds the chart mesh and
+/// carries the UVs over: both sides of a new cut start where the uncut
+/// vertex was, so the map stays flip-free.
 template <typename Surface>
 void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Joint_state& state)
 {
   for(const Cut_path& path : paths)
     for(int e : path.edges) state.is_cut[e] = 1;
+  make_disks(surface, state.is_cut);
   const std::vector<int> old_corner_uv = state.corner_uv;
   const UV_vector old_x = state.x;
   build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
