@@ -13,7 +13,11 @@
 #include <CGAL/Surface_mesh_parameterization/make_seam_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
+#include <cstring>
 #include <iomanip>
 #include <map>
 #include <set>
@@ -232,6 +236,35 @@ CUT_TYPED_TEST(determinism, Mesh_types)
   CHECK(a.result.distortion == b.result.distortion);
   CHECK_EQ(a.result.newton_iterations, b.result.newton_iterations);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// Parallel loops write per-index slots and reduce in index order: the
+// output must not depend on how many threads run them.
+CUT_TEST(determinism_across_thread_counts)
+{
+  using Mesh = Surface_mesh;
+  const Mesh mesh = make_mesh<Mesh>(spike_disk_soup(24, 48, 1.5, 0.2)); // over 2000 faces: loops split
+  std::vector<std::vector<Point_2>> uvs;
+  std::vector<std::vector<char>> seams;
+  for(int threads : {1, 2, 5})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    Cut_run<Mesh> run(mesh);
+    REQUIRE(run.run().ok());
+    uvs.push_back(run.uv_vector());
+    seams.push_back(run.seam_vector());
+  }
+  for(std::size_t i = 1; i < uvs.size(); ++i)
+  {
+    CHECK(seams[i] == seams[0]);
+    REQUIRE_EQ(uvs[i].size(), uvs[0].size());
+    std::size_t differ = 0;
+    for(std::size_t k = 0; k < uvs[0].size(); ++k)
+      if(std::memcmp(&uvs[i][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
+    CHECK_EQ(differ, std::size_t(0));
+  }
+}
+#endif
 
 CUT_TYPED_TEST(user_seams_are_kept, Mesh_types)
 {

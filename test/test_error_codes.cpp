@@ -1,7 +1,9 @@
-// Error codes of symmetric_dirichlet_parameterize on bad input (never a
-// crash; degenerate faces are accepted and clamped), and the package's
-// message / name tables.
-#include "generators.h"
+// Error codes of symmetric_dirichlet_parameterize and cut_and_parameterize
+// on bad input (never a crash; degenerate faces are accepted and clamped
+// unless asked otherwise; isolated vertices are ignored), the Tutte
+// fallback for zero-length boundary edges, and the package's message / name
+// tables.
+#include "cut_result_checks.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
@@ -234,6 +236,147 @@ CUT_TYPED_TEST(tiny_and_odd_inputs, Mesh_types)
     build_mesh(soup, mesh);
     CHECK_EQ(parameterize(mesh), SMP::ERROR_EMPTY_MESH);
   }
+}
+
+/// Two triangle fans sharing only their center: a pinched vertex.
+Soup pinched_fans()
+{
+  Soup soup;
+  soup.add_point(0, 0, 0);
+  for(int side : {1, -1})
+  {
+    const std::size_t first = soup.points.size();
+    for(int k = 0; k < 4; ++k)
+      soup.add_point(side * (1. + 0.3 * k), 0.5 * k - 0.75, 0.);
+    for(std::size_t k = 0; k + 1 < 4; ++k)
+      if(side > 0) soup.add_triangle(0, first + k, first + k + 1);
+      else soup.add_triangle(0, first + k + 1, first + k);
+  }
+  return soup;
+}
+
+CUT_TYPED_TEST(non_manifold_vertex, Mesh_types)
+{
+  TestType mesh;
+  build_mesh(pinched_fans(), mesh);
+  REQUIRE_EQ(num_faces(mesh), std::size_t(6));
+  CHECK_EQ(parameterize(mesh), SMP::ERROR_NON_MANIFOLD);
+  Cut_run<TestType> run(mesh);
+  CHECK_EQ(run.run().error, SMP::ERROR_NON_MANIFOLD);
+  // two grids touching at one corner: the corner (0, 0) of the second grid
+  // is the corner (2, 2) of the first
+  TestType other;
+  Soup corners = grid_soup(2, 2);
+  const std::size_t shared = grid_point(2, 2, 2), offset = corners.points.size();
+  Soup second = grid_soup(2, 2);
+  second.translate(1., 1., 0.);
+  for(const auto& p : second.points) corners.add_point(p[0], p[1], p[2]);
+  for(auto f : second.faces)
+  {
+    for(std::size_t& i : f) i = (i == grid_point(2, 0, 0)) ? shared : i + offset;
+    corners.faces.push_back(f);
+  }
+  build_mesh(corners, other);
+  CHECK_EQ(parameterize(other), SMP::ERROR_NON_MANIFOLD);
+}
+
+CUT_TYPED_TEST(tiny_boundary_ear_uses_the_tutte_fallback, Mesh_types)
+{
+  // A well-shaped ear 1e-10 wide at a corner of a unit square: arc-length
+  // spacing puts its three corners on the circle within 1e-10 of each other,
+  // where the circle's sagitta (1e-21) is below round-off, so the first
+  // embedding has a zero-area or flipped face; evenly spaced boundary
+  // vertices have none.
+  const double t = 1e-10;
+  Soup soup;
+  soup.add_point(0, 0, 0); // 0: the corner
+  soup.add_point(t, 0, 0); // 1
+  soup.add_point(0, t, 0); // 2
+  soup.add_point(1, 0, 0); // 3
+  soup.add_point(1, 1, 0); // 4
+  soup.add_point(0, 1, 0); // 5
+  soup.add_point(0.5, 0.5, 0); // 6: interior
+  soup.add_triangle(0, 1, 2);
+  soup.add_triangle(1, 3, 6);
+  soup.add_triangle(3, 4, 6);
+  soup.add_triangle(4, 5, 6);
+  soup.add_triangle(5, 2, 6);
+  soup.add_triangle(2, 1, 6);
+  TestType mesh;
+  build_mesh(soup, mesh);
+  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  // (check_cut_result() would compare E_d with the library's, which uses the
+  // clamped rest shape of the needle (2, 1, 6))
+  Cut_run<TestType> run(mesh);
+  REQUIRE(run.run().ok());
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, run.uvs()), std::size_t(0));
+  CHECK(run.result.number_of_degenerate_faces >= 1);
+}
+
+CUT_TYPED_TEST(cut_and_parameterize_on_bad_input, Mesh_types)
+{
+  {
+    TestType empty;
+    Cut_run<TestType> run(empty);
+    CHECK_EQ(run.run().error, SMP::ERROR_EMPTY_MESH);
+  }
+  {
+    TestType quads;
+    build_mesh(quad_grid_soup(3, 2), quads);
+    Cut_run<TestType> run(quads);
+    CHECK_EQ(run.run().error, SMP::ERROR_NON_TRIANGULAR_MESH);
+  }
+  {
+    Soup soup = sphere_soup(3);
+    soup.points[5][1] = std::numeric_limits<double>::quiet_NaN();
+    TestType mesh;
+    build_mesh(soup, mesh);
+    Cut_run<TestType> run(mesh);
+    CHECK_EQ(run.run().error, SMP::ERROR_NON_FINITE_COORDINATE);
+    // outputs untouched on error
+    CHECK_EQ(run.number_of_seam_edges(), std::size_t(0));
+  }
+}
+
+CUT_TYPED_TEST(isolated_vertices_are_ignored, Mesh_types)
+{
+  Soup soup = sphere_soup(3);
+  soup.add_point(7, 7, 7);
+  soup.add_point(std::numeric_limits<double>::quiet_NaN(), 0, 0); // never read
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Cut_run<TestType> run(mesh);
+  run.run();
+  check_cut_result(mesh, run);
+  CHECK_EQ(run.result.number_of_isolated_vertices, std::size_t(2));
+  TestType disk;
+  Soup grid = grid_soup(3, 3);
+  grid.add_point(std::numeric_limits<double>::infinity(), 0, 0);
+  build_mesh(grid, disk);
+  auto disk_uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), disk);
+  CHECK_EQ(SMP::symmetric_dirichlet_parameterize(disk, disk_uv), SMP::OK);
+}
+
+CUT_TYPED_TEST(degenerate_faces_clamped_or_rejected, Mesh_types)
+{
+  Soup soup = grid_soup(4, 4);
+  soup.points[grid_point(4, 2, 2)] = soup.points[grid_point(4, 3, 2)]; // two zero-area faces
+  TestType mesh;
+  build_mesh(soup, mesh);
+  Cut_run<TestType> clamped(mesh);
+  clamped.run();
+  check_cut_result(mesh, clamped);
+  CHECK_EQ(clamped.result.number_of_degenerate_faces, std::size_t(2));
+  Cut_run<TestType> strict(mesh);
+  CHECK_EQ(strict.run(SMP::parameters::reject_degenerate_faces(true)).error, SMP::ERROR_DEGENERATE_FACE);
+  CHECK_EQ(strict.number_of_seam_edges(), std::size_t(0));
+  // a clean mesh passes the strict mode
+  TestType clean;
+  build_mesh(grid_soup(4, 4), clean);
+  Cut_run<TestType> clean_run(clean);
+  CHECK(clean_run.run(SMP::parameters::reject_degenerate_faces(true)).ok());
 }
 
 CUT_TEST(error_messages_and_names)

@@ -82,7 +82,7 @@ CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
     pinned.radius = radius;
     pinned.center = ic::Vector2(0.3, -2.);
     ic::UV_vector x;
-    REQUIRE(ic::tutte_embedding(chart.mesh, {pinned}, x));
+    REQUIRE(ic::tutte_embedding(chart.mesh, {pinned}, ic::Boundary_spacing::ARC_LENGTH, x));
     REQUIRE(x.allFinite());
     CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
     double min_area = std::numeric_limits<double>::infinity();

@@ -1,10 +1,11 @@
 // uv_unwrap: command-line front end of cut_and_parameterize(). Reads a
-// triangle mesh, cuts it and computes a UV map, writes an OBJ with texture
+// mesh (tools/mesh_input.h: validation, repair and triangulation, with
+// warnings), cuts it and computes a UV map, writes an OBJ with texture
 // coordinates and, on request, a JSON file of statistics and pictures
 // (tools/preview).
-#include <CGAL/Simple_cartesian.h>
+#include "mesh_input.h"
+
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
@@ -33,18 +34,21 @@ namespace {
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
 
-using Kernel = CGAL::Simple_cartesian<double>;
+using Kernel = mesh_input::Kernel;
 using Point_2 = Kernel::Point_2;
 using Point_3 = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point_3>;
+using Mesh = mesh_input::Mesh;
 using halfedge_descriptor = Mesh::Halfedge_index;
 using edge_descriptor = Mesh::Edge_index;
 using face_descriptor = Mesh::Face_index;
 
 // Any failure the user should read about: main prints it as one line.
+// `status` goes to the statistics (ERROR_USAGE for command-line mistakes).
 struct Failure : std::runtime_error
 {
-  using std::runtime_error::runtime_error;
+  explicit Failure(const std::string& message, std::string status_ = "ERROR_USAGE")
+    : std::runtime_error(message), status(std::move(status_)) {}
+  std::string status;
 };
 
 struct Options
@@ -65,9 +69,11 @@ struct Options
 const char* const usage_text =
   "usage: uv_unwrap [INPUT] [options]\n"
   "\n"
-  "Cuts a triangle mesh (OBJ, OFF or PLY) along seams chosen jointly with a\n"
+  "Cuts a mesh (OBJ, OFF, PLY or STL) along seams chosen jointly with a\n"
   "low-distortion UV map (Ambrosio-Tortorelli method) and writes the result as\n"
   "an OBJ with texture coordinates. Without INPUT, runs on a built-in mesh.\n"
+  "Polygons are triangulated and non-manifold input is repaired, with a\n"
+  "warning on stderr; unusable input is an error (exit status 1).\n"
   "\n"
   "options:\n"
   "  -o, --output FILE       output OBJ (default: <input name>_uv.obj in the current directory)\n"
@@ -81,7 +87,7 @@ const char* const usage_text =
   "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
   "  --up AXIS               up axis of the mesh for --png: x, y, z, -z, ... (default y)\n"
   "  --v-field FILE.ply      write the discontinuity field v as a colored PLY\n"
-  "  -q, --quiet             print nothing but errors\n"
+  "  -q, --quiet             print nothing but warnings and errors\n"
   "  -h, --help              show this help\n";
 
 double parse_number(const std::string& option, const std::string& text)
@@ -215,69 +221,24 @@ std::string find_default_mesh(const char* argv0)
   return {};
 }
 
-// CGAL's OFF and PLY readers reserve memory for the element counts of the
-// header before reading any element, so a corrupt header could make them
-// allocate gigabytes. Every element takes at least one byte of the file:
-// reject counts larger than the file.
-void check_header_counts(const std::string& filename, std::uintmax_t file_size)
+// Reads, validates and repairs (tools/mesh_input.h); warnings go to stderr
+// and to the statistics.
+void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>& warnings)
 {
-  std::ifstream in(filename, std::ios::binary);
-  std::string keyword;
-  in >> keyword;
-  auto check = [&](double count) {
-    if(count > double(file_size))
-      throw Failure("cannot read '" + filename + "': its header announces " +
-                    std::to_string(std::uintmax_t(count)) + " elements in a file of " +
-                    std::to_string(file_size) + " bytes");
-  };
-  if(keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0)
+  mesh_input::Input_report report;
+  try
   {
-    std::string line;
-    std::getline(in, line);
-    if(line.find("BINARY") != std::string::npos) return;
-    // The counts follow, possibly after comment lines; nOFF puts the dimension first.
-    std::string token;
-    for(int read = 0; read < 3 && in >> token;)
-    {
-      if(token[0] == '#') { std::getline(in, line); continue; }
-      char* end = nullptr;
-      const double count = std::strtod(token.c_str(), &end);
-      if(end == token.c_str()) return; // malformed: the reader will say no
-      check(count);
-      ++read;
-    }
+    mesh_input::read_input_mesh(filename, mesh, report);
   }
-  else if(keyword == "ply")
+  catch(const mesh_input::Input_error& e)
   {
-    std::string line;
-    while(std::getline(in, line) && line.rfind("end_header", 0) != 0)
-    {
-      std::istringstream words(line);
-      std::string word, name;
-      double count = 0.;
-      if(words >> word && word == "element" && words >> name >> count) check(count);
-    }
+    throw Failure(e.what(), e.status);
   }
-}
-
-void read_mesh(const std::string& filename, Mesh& mesh)
-{
-  std::error_code ec;
-  if(!fs::exists(filename, ec)) throw Failure("cannot open '" + filename + "': no such file");
-  if(!fs::is_regular_file(filename, ec)) throw Failure("cannot read '" + filename + "': not a regular file");
-  if(!std::ifstream(filename)) throw Failure("cannot open '" + filename + "': permission denied");
-  const std::uintmax_t size = fs::file_size(filename, ec);
-  if(ec || size == 0) throw Failure("'" + filename + "' is empty");
-  check_header_counts(filename, size);
-
-  // CGAL's reader picks the format from the extension and rejects
-  // non-manifold input.
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh, CGAL::parameters::verbose(false)))
-    throw Failure("cannot read '" + filename +
-                  "': not a valid manifold polygon mesh in a supported format (.obj, .off, .ply)");
-  if(num_faces(mesh) == 0) throw Failure("'" + filename + "' has no faces");
-  if(!CGAL::is_triangle_mesh(mesh))
-    throw Failure("'" + filename + "' is not a triangle mesh; triangulate it first");
+  for(const std::string& w : report.warnings)
+  {
+    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    warnings.push_back(w);
+  }
 }
 
 // ---------------------------------------------------------------- output
@@ -313,6 +274,9 @@ std::string json_number(double x)
 struct Run_summary
 {
   std::string input;
+  std::string status = "ok";          // "ok", ERROR_USAGE, an input error or a library error name
+  std::string error;                  // one-line message when status is not "ok"
+  std::vector<std::string> warnings;  // input repairs and remarks
   std::size_t vertices = 0, faces = 0, flipped_faces = 0;
   SMP::Cut_and_parameterize_result result;
   double time_seconds = 0.;
@@ -323,8 +287,15 @@ void write_stats(const std::string& filename, const Run_summary& s)
   std::ofstream out(filename);
   out << "{\n"
       << "  \"input\": " << json_string(s.input) << ",\n"
+      << "  \"status\": " << json_string(s.status) << ",\n"
+      << "  \"error\": " << (s.status == "ok" ? std::string("null") : json_string(s.error)) << ",\n"
+      << "  \"warnings\": [";
+  for(std::size_t i = 0; i < s.warnings.size(); ++i)
+    out << (i ? ",\n    " : "\n    ") << json_string(s.warnings[i]);
+  out << (s.warnings.empty() ? "" : "\n  ") << "],\n"
       << "  \"vertices\": " << s.vertices << ",\n"
       << "  \"faces\": " << s.faces << ",\n"
+      << "  \"degenerate_faces\": " << s.result.number_of_degenerate_faces << ",\n"
       << "  \"charts\": " << s.result.number_of_charts << ",\n"
       << "  \"seam_edges\": " << s.result.number_of_seam_edges << ",\n"
       << "  \"seam_length\": " << json_number(s.result.seam_length) << ",\n"
@@ -332,11 +303,10 @@ void write_stats(const std::string& filename, const Run_summary& s)
       << "  \"initial_distortion\": " << json_number(s.result.initial_distortion) << ",\n"
       << "  \"flipped_faces\": " << s.flipped_faces << ",\n"
       << "  \"time_seconds\": " << json_number(s.time_seconds) << ",\n"
-      << "  \"newton_iterations\": " << s.result.newton_iterations << ",\n"
-      << "  \"status\": " << json_string(SMP::error_name(s.result.error)) << "\n"
+      << "  \"newton_iterations\": " << s.result.newton_iterations << "\n"
       << "}\n";
   out.close();
-  if(!out) throw Failure("cannot write '" + filename + "'");
+  if(!out) throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
 }
 
 template <typename SeamMap, typename UVMap, typename VMap>
@@ -382,47 +352,48 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
     caption.faces = summary.faces;
     caption.charts = summary.result.number_of_charts;
     caption.name = name;
-    if(!write_uv_svg(options.svg, preview, caption)) throw Failure("cannot write '" + options.svg + "'");
+    if(!write_uv_svg(options.svg, preview, caption))
+      throw Failure("cannot write '" + options.svg + "'", "ERROR_CANNOT_WRITE");
   }
   if(!options.png.empty())
   {
     if(!write_checker_png(options.png, preview, 1024, 768, true, options.camera))
-      throw Failure("cannot write '" + options.png + "'");
+      throw Failure("cannot write '" + options.png + "'", "ERROR_CANNOT_WRITE");
   }
   if(!options.v_field.empty() && !write_v_field_ply(options.v_field, preview))
-    throw Failure("cannot write '" + options.v_field + "'");
+    throw Failure("cannot write '" + options.v_field + "'", "ERROR_CANNOT_WRITE");
 }
 
 // ---------------------------------------------------------------- run
 
-int run(int argc, char** argv)
+void run(const char* argv0, Options& options, Run_summary& summary)
 {
-  Options options;
-  if(!parse_arguments(argc, argv, options)) return EXIT_SUCCESS;
-
   Mesh mesh;
-  std::string input_name = options.input, stem;
+  std::string stem;
   if(!options.input.empty())
   {
-    read_mesh(options.input, mesh);
+    summary.input = options.input;
+    read_mesh(options.input, mesh, summary.warnings);
     stem = fs::path(options.input).stem().string();
   }
-  else if(std::string data_mesh = find_default_mesh(argv[0]); !data_mesh.empty())
+  else if(std::string data_mesh = find_default_mesh(argv0); !data_mesh.empty())
   {
-    read_mesh(data_mesh, mesh);
-    input_name = data_mesh;
+    summary.input = data_mesh;
+    read_mesh(data_mesh, mesh, summary.warnings);
     stem = fs::path(data_mesh).stem().string();
   }
   else
   {
     make_spherical_cap(mesh);
-    input_name = "built-in spherical cap";
+    summary.input = "built-in spherical cap";
     stem = "spherical_cap";
   }
   if(options.output.empty()) options.output = stem + "_uv.obj";
+  summary.vertices = num_vertices(mesh);
+  summary.faces = num_faces(mesh);
   if(!options.quiet)
-    std::cout << "uv_unwrap: " << input_name << ": " << num_vertices(mesh) << " vertices, "
-              << num_faces(mesh) << " faces" << std::endl;
+    std::cout << "uv_unwrap: " << summary.input << ": " << summary.vertices << " vertices, "
+              << summary.faces << " faces" << std::endl;
 
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
@@ -450,23 +421,19 @@ int run(int argc, char** argv)
                   P::face_discontinuity_map(v_field,
                   P::progress_callback(options.quiet ? decltype(progress)() : progress)))))));
 
-  Run_summary summary;
-  summary.input = input_name;
-  summary.vertices = num_vertices(mesh);
-  summary.faces = num_faces(mesh);
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
   summary.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if(summary.result.ok()) summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
-
-  // Stats are written on failure too: the status says what went wrong.
-  if(!options.stats.empty()) write_stats(options.stats, summary);
   if(!summary.result.ok())
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
-                  SMP::error_name(summary.result.error) + ")");
+                  SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
+  summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
 
+  // Isolated vertices are written as plain `v` lines that no face uses (the
+  // writer numbers every vertex), so indices and positions stay those of the
+  // input.
   if(!SMP::write_OBJ_with_uvs(options.output, mesh, uvmap))
-    throw Failure("cannot write '" + options.output + "'");
+    throw Failure("cannot write '" + options.output + "'", "ERROR_CANNOT_WRITE");
   write_pictures(options, mesh, seams, uvmap, v_field, summary, stem);
 
   if(!options.quiet)
@@ -482,28 +449,61 @@ int run(int argc, char** argv)
       if(!file->empty()) std::cout << ", " << *file;
     std::cout << std::endl;
   }
-  return EXIT_SUCCESS;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+  Options options;
   try
   {
-    return run(argc, argv);
+    if(!parse_arguments(argc, argv, options)) return EXIT_SUCCESS;
   }
   catch(const Failure& e)
   {
     std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  // Every failure from here on is one line on stderr, exit status 1, and
+  // the statistics (when asked for) with its status and message.
+  Run_summary summary;
+  try
+  {
+    run(argv[0], options, summary);
+  }
+  catch(const Failure& e)
+  {
+    summary.status = e.status;
+    summary.error = e.what();
   }
   catch(const std::bad_alloc&)
   {
-    std::cerr << "uv_unwrap: error: out of memory" << std::endl;
+    summary.status = "ERROR_OUT_OF_MEMORY";
+    summary.error = "out of memory";
   }
   catch(const std::exception& e)
   {
-    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+    summary.status = "ERROR_INTERNAL";
+    summary.error = e.what();
   }
+  if(!options.stats.empty())
+  {
+    try
+    {
+      write_stats(options.stats, summary);
+    }
+    catch(const Failure& e)
+    {
+      if(summary.status == "ok")
+      {
+        summary.status = e.status;
+        summary.error = e.what();
+      }
+    }
+  }
+  if(summary.status == "ok") return EXIT_SUCCESS;
+  std::cerr << "uv_unwrap: error: " << summary.error << std::endl;
   return EXIT_FAILURE;
 }

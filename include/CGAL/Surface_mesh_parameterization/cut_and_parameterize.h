@@ -3,6 +3,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas_validity.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
@@ -33,6 +34,7 @@ struct Cut_and_parameterize_result
   std::size_t number_of_seam_edges = 0;///< seam edges (mesh boundary excluded)
   std::size_t newton_iterations = 0;   ///< total projected Newton iterations
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
+  std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)
@@ -171,19 +173,36 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   - `gamma`: default 1e-7
 ///   - `number_of_passes`: optimize → cut rounds; default 1
 ///   - `minimum_relative_cut_length`: keep cut paths at least this fraction of the longest; default 0.2
+///   - `reject_degenerate_faces`: bool, return `ERROR_DEGENERATE_FACE` on a degenerate face
+///     instead of clamping it; default false
 ///   - `face_discontinuity_map`: output face → double, the field v of the last pass
 ///   - `progress_callback`: `std::function<bool(const Cut_and_parameterize_progress&)>`;
 ///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
 ///
-/// Degenerate faces (zero area, needles, coincident corners) are accepted:
-/// their rest shape is clamped to a height of 1e-4 times their longest side
-/// (counted in `number_of_degenerate_faces`), so no NaN can appear.
+/// Degenerate faces (zero area, needles, coincident corners) are accepted
+/// unless `reject_degenerate_faces` is set: their rest shape is clamped to a
+/// height of 1e-4 times their longest side (counted in
+/// `number_of_degenerate_faces`), so no NaN can appear. Vertices in no face
+/// are ignored (counted in `number_of_isolated_vertices`).
+///
+/// \return a result whose `error` is `OK` or one of: `ERROR_EMPTY_MESH` (no
+///   face), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE` (a
+///   vertex of a face has a NaN or infinite coordinate), `ERROR_NON_MANIFOLD`
+///   (a pinched vertex: its faces form several fans), `ERROR_DEGENERATE_FACE`
+///   (only with `reject_degenerate_faces`), `ERROR_WRONG_PARAMETER`,
+///   `ERROR_NO_TOPOLOGICAL_DISC` (the initial cut failed),
+///   `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` (a factorization or solve failed),
+///   `ERROR_NO_1_TO_1_MAPPING` (the final map would have a flipped face or a
+///   non-finite UV; never returned on any mesh tested), `ERROR_CANCELED`.
+///   On any error the outputs are left unchanged.
 ///
 /// \pre the mesh is a triangle mesh
-/// \post on success, no face of the UV map is flipped, and every seam edge is
-///   an edge of the mesh that is not on its boundary
+/// \post on success: every UV is finite, no face of the UV map is flipped,
+///   every seam edge is an edge of the mesh that is not on its boundary, and
+///   cutting along the seams leaves every connected component a topological
+///   disk (checked by assertions in debug builds)
 ///
 /// \sa \ref PkgCutParameterizationNamedParameters (types, defaults and valid
 ///   values of the named parameters), \ref Chapter_Cut_parameterization
@@ -203,6 +222,13 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   Surface surface;
   result.error = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
   if(result.error != OK) return result;
+  result.number_of_isolated_vertices = surface.isolated_vertices;
+  if(choose_parameter(get_parameter(np, internal_np::reject_degenerate_faces), false) &&
+     ic::number_of_degenerate_faces(surface) > 0)
+  {
+    result.error = ERROR_DEGENERATE_FACE;
+    return result;
+  }
 
   const ic::Joint_settings settings = internal::cut::joint_settings(np);
   std::vector<double> face_lambda(surface.number_of_faces());
@@ -226,6 +252,7 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   auto v_map = choose_parameter(get_parameter(np, internal_np::face_discontinuity_map), ic::Ignored_face_map());
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f) put(v_map, surface.faces[f], state.v.size() ? state.v[f] : 1.);
   ic::fill_statistics(surface, state, result);
+  CGAL_postcondition(ic::is_valid_atlas(surface, state));
   return result;
 }
 } // namespace Surface_mesh_parameterization

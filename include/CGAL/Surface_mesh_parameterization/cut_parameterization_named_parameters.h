@@ -56,6 +56,8 @@ CGAL_SMP_CUT_NAMED_PARAMETER(face_discontinuity_map_t, face_discontinuity_map)
 CGAL_SMP_CUT_NAMED_PARAMETER(progress_callback_t, progress_callback)
 /// Keep only cut paths at least this fraction of the longest one (default 0.2).
 CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut_length)
+/// true: refuse degenerate faces with ERROR_DEGENERATE_FACE instead of clamping them (default false).
+CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
 
 #undef CGAL_SMP_CUT_NAMED_PARAMETER
 

@@ -22,6 +22,7 @@ inline Error_code to_error_code(Indexing_status status)
     case Indexing_status::OK: return OK;
     case Indexing_status::EMPTY: return ERROR_EMPTY_MESH;
     case Indexing_status::NOT_TRIANGLE: return ERROR_NON_TRIANGULAR_MESH;
+    case Indexing_status::NON_MANIFOLD: return ERROR_NON_MANIFOLD;
     default: return ERROR_NON_FINITE_COORDINATE;
   }
 }
@@ -93,7 +94,7 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 /// \post on `OK`, every face has a UV triangle of positive signed area
 ///
 /// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
-///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`,
+///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`, `ERROR_NON_MANIFOLD` (pinched vertex),
 ///   `ERROR_WRONG_PARAMETER` (negative or non-finite weight), `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
 ///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
 ///
@@ -145,7 +146,7 @@ Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMa
     const ic::Embedding_status embedding = ic::disk_charts_embedding(chart, x);
     if(embedding == ic::Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
     if(embedding == ic::Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    if(ic::number_of_flipped_faces(chart, x) > 0) return ERROR_NO_1_TO_1_MAPPING;
+    if(embedding == ic::Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
   }
 
   ic::Distortion_minimizer minimizer(chart, std::move(weights));

@@ -106,6 +106,15 @@ inline std::uint64_t directed_edge_key(int a, int b)
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
 }
 
+/// Faces whose UV triangle does not have a positive signed area (a NaN counts).
+inline int number_of_flipped_faces(const Chart_mesh& mesh, const UV_vector& x)
+{
+  int flipped = 0;
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    if(!(mesh.uv_edges(x, f).determinant() > 0.)) ++flipped;
+  return flipped;
+}
+
 /// Boundary loops of the chart mesh, each a cycle of UV vertices oriented
 /// like the faces (interior on the left). Empty for a closed mesh.
 inline std::vector<std::vector<int>> boundary_loops(const Chart_mesh& mesh)

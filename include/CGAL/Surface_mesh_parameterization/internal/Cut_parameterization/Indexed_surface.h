@@ -40,6 +40,7 @@ struct Indexed_surface
   std::vector<int> twin;                            // face-edge 3f+k -> twin face-edge, -1 on the border
   std::vector<int> edge_of;                         // face-edge -> edge index
   std::unordered_map<halfedge_descriptor, int> halfedge_corner; // h_k -> 3f+k (face halfedges only)
+  std::size_t isolated_vertices = 0;                // vertices in no face, left out
 
   std::size_t number_of_faces() const { return faces.size(); }
   std::size_t number_of_vertices() const { return vertices.size(); }
@@ -56,19 +57,61 @@ struct Indexed_surface
   }
 };
 
-enum class Indexing_status { OK, EMPTY, NOT_TRIANGLE, NOT_FINITE };
+enum class Indexing_status { OK, EMPTY, NOT_TRIANGLE, NOT_FINITE, NON_MANIFOLD };
 
-/// Fills `out` from `mesh`. Fails on an empty mesh, a non-triangle face or a
-/// non-finite coordinate.
+/// The three halfedges of face f (h_0 = halfedge(f)); false if f is not a triangle.
+template <typename TriangleMesh, typename Halfedge>
+bool triangle_halfedges(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                        const TriangleMesh& mesh, std::array<Halfedge, 3>& h)
+{
+  int k = 0;
+  for(Halfedge hf : halfedges_around_face(halfedge(f, mesh), mesh))
+  {
+    if(k == 3) return false;
+    h[k++] = hf;
+  }
+  return k == 3;
+}
+
+/// False at a pinched vertex, whose faces form several fans: its
+/// circulation meets more than one border halfedge (the fans are linked
+/// through the border), or misses some of the `corners` faces at v.
+template <typename TriangleMesh, typename Vertex>
+bool is_manifold_vertex(Vertex v, const TriangleMesh& mesh, int corners)
+{
+  int around = 0, border = 0;
+  for(auto h : halfedges_around_target(halfedge(v, mesh), mesh))
+    ++(is_border(h, mesh) ? border : around);
+  return around == corners && border <= 1;
+}
+
+/// Fills `out` from `mesh`. Fails on an empty mesh, a non-triangle face, a
+/// non-finite coordinate or a non-manifold (pinched) vertex. Vertices in no
+/// face are left out (counted in `isolated_vertices`): their coordinates are
+/// not read and they get no UV.
 template <typename TriangleMesh, typename VertexPointMap>
 Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
                               Indexed_surface<TriangleMesh>& out)
 {
   using IS = Indexed_surface<TriangleMesh>;
   using halfedge_descriptor = typename IS::halfedge_descriptor;
-  std::unordered_map<typename IS::vertex_descriptor, int> vertex_index;
-  for(auto v : vertices(mesh))
+  std::unordered_map<typename IS::vertex_descriptor, int> corners_at; // vertex -> number of corners
+  for(auto f : faces(mesh))
   {
+    std::array<halfedge_descriptor, 3> h;
+    if(!triangle_halfedges(f, mesh, h)) return Indexing_status::NOT_TRIANGLE;
+    out.faces.push_back(f);
+    out.corner_halfedge.push_back(h);
+    for(halfedge_descriptor hc : h) ++corners_at[target(hc, mesh)];
+  }
+  if(out.faces.empty()) return Indexing_status::EMPTY;
+
+  std::unordered_map<typename IS::vertex_descriptor, int> vertex_index;
+  for(auto v : vertices(mesh)) // in the mesh's order, for determinism
+  {
+    const auto used = corners_at.find(v);
+    if(used == corners_at.end()) { ++out.isolated_vertices; continue; }
+    if(!is_manifold_vertex(v, mesh, used->second)) return Indexing_status::NON_MANIFOLD;
     const auto& p = get(vpm, v);
     const Vector3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if(!q.allFinite()) return Indexing_status::NOT_FINITE;
@@ -76,25 +119,14 @@ Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
     out.vertices.push_back(v);
     out.points.push_back(q);
   }
-  for(auto f : faces(mesh))
+  for(std::size_t fi = 0; fi < out.faces.size(); ++fi)
   {
-    std::array<halfedge_descriptor, 3> h;
-    int k = 0;
-    for(halfedge_descriptor hf : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      if(k == 3) return Indexing_status::NOT_TRIANGLE;
-      h[k++] = hf;
-    }
-    if(k != 3) return Indexing_status::NOT_TRIANGLE;
-    const int fi = int(out.faces.size());
-    out.faces.push_back(f);
-    out.corner_halfedge.push_back(h);
+    const auto& h = out.corner_halfedge[fi];
     out.corner_vertex.push_back({vertex_index.at(target(h[0], mesh)),
                                  vertex_index.at(target(h[1], mesh)),
                                  vertex_index.at(target(h[2], mesh))});
-    for(int c = 0; c < 3; ++c) out.halfedge_corner.emplace(h[c], 3 * fi + c);
+    for(int c = 0; c < 3; ++c) out.halfedge_corner.emplace(h[c], int(3 * fi) + c);
   }
-  if(out.faces.empty()) return Indexing_status::EMPTY;
 
   const int n_face_edges = int(3 * out.faces.size());
   out.twin.assign(n_face_edges, -1);
@@ -115,6 +147,31 @@ Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
     out.edge_of[twin] = out.edge_of[fe];
   }
   return Indexing_status::OK;
+}
+
+/// Mean length of the face edges (an edge inside counts twice); 1 if all are
+/// zero. The fallback size of faces whose corners coincide.
+template <typename TriangleMesh>
+double mean_face_edge_length(const Indexed_surface<TriangleMesh>& surface)
+{
+  const int n_face_edges = int(3 * surface.number_of_faces());
+  double sum = 0.;
+  for(int fe = 0; fe < n_face_edges; ++fe) sum += surface.edge_length(fe);
+  return sum > 0. && std::isfinite(sum) ? sum / n_face_edges : 1.;
+}
+
+/// Faces that Chart_mesh::set_rest_shape() would clamp.
+template <typename TriangleMesh>
+std::size_t number_of_degenerate_faces(const Indexed_surface<TriangleMesh>& surface)
+{
+  const double mean_edge = mean_face_edge_length(surface);
+  Chart_mesh probe;
+  probe.resize_faces(1);
+  std::size_t degenerate = 0;
+  for(const auto& cv : surface.corner_vertex)
+    if(probe.set_rest_shape(0, surface.points[cv[0]], surface.points[cv[1]], surface.points[cv[2]], mean_edge))
+      ++degenerate;
+  return degenerate;
 }
 
 /// Chart mesh whose UV vertices are the corner classes of the surface cut
@@ -152,9 +209,7 @@ std::size_t build_chart_mesh(const Indexed_surface<TriangleMesh>& surface, const
   chart = Chart_mesh();
   chart.number_of_vertices = n;
   chart.resize_faces(surface.number_of_faces());
-  double edge_sum = 0.;
-  for(int fe = 0; fe < n_corners; ++fe) edge_sum += surface.edge_length(fe);
-  const double mean_edge = edge_sum > 0. ? edge_sum / n_corners : 1.;
+  const double mean_edge = mean_face_edge_length(surface);
   std::size_t degenerate = 0;
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
   {

@@ -157,8 +157,8 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   state.degenerate_faces = build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
-  if(embedding == Embedding_status::SOLVE_FAILED || number_of_flipped_faces(state.chart, state.x) > 0)
-    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
   state.initial_distortion = mean_distortion(state.chart, state.x);
   if(settings.progress && !settings.progress({"initialize", 0, 0, settings.alternations_per_pass(),
                                               settings.epsilon_start, state.initial_distortion}))

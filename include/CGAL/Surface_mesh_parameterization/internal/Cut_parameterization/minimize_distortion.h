@@ -39,14 +39,6 @@ public:
   }
 };
 
-inline int number_of_flipped_faces(const Chart_mesh& mesh, const UV_vector& x)
-{
-  int flipped = 0;
-  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
-    if(!(mesh.uv_edges(x, f).determinant() > 0.)) ++flipped;
-  return flipped;
-}
-
 /// E_d of METHOD.md on the chart mesh: area-weighted mean of s1²+s2²+s1⁻²+s2⁻².
 inline double mean_distortion(const Chart_mesh& mesh, const UV_vector& x)
 {

@@ -38,11 +38,17 @@ struct Pinned_loop
   double radius = 1.;
 };
 
+/// Where the boundary vertices go on their circle: spaced like their 3D arc
+/// length, or evenly (the fallback when zero-length boundary edges make
+/// arc-length spacing put two vertices on one point).
+enum class Boundary_spacing { ARC_LENGTH, UNIFORM };
+
 /// Writes the Tutte embedding into x: each loop on its circle, every other
 /// vertex at the mean of its neighbours. Precondition: each connected
 /// component has exactly one of the loops as its only boundary. Components
 /// do not interact, so one solve embeds them all. False if the solve fails.
-inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<Pinned_loop>& loops, UV_vector& x)
+inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<Pinned_loop>& loops, Boundary_spacing spacing,
+                            UV_vector& x)
 {
   const int n = mesh.number_of_vertices;
   x.setZero(2 * n);
@@ -54,7 +60,8 @@ inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<Pinned_loo
     std::vector<double> lengths(m);
     double perimeter = 0.;
     for(std::size_t i = 0; i < m; ++i)
-      perimeter += lengths[i] = length.at(directed_edge_key(loop.vertices[i], loop.vertices[(i+1) % m]));
+      perimeter += lengths[i] = spacing == Boundary_spacing::UNIFORM
+                                  ? 1. : length.at(directed_edge_key(loop.vertices[i], loop.vertices[(i+1) % m]));
     double arc = 0.;
     for(std::size_t i = 0; i < m; ++i)
     {
@@ -115,10 +122,14 @@ inline bool tutte_embedding(const Chart_mesh& mesh, const std::vector<Pinned_loo
   return true;
 }
 
-enum class Embedding_status { OK, NOT_DISKS, SOLVE_FAILED };
+enum class Embedding_status { OK, NOT_DISKS, SOLVE_FAILED, FLIPPED };
 
 /// Tutte embedding of a chart mesh whose components are all topological
 /// disks, each on its own circle (of its own area), circles side by side.
+/// Exact Tutte maps are flip-free, but boundary vertices that arc-length
+/// spacing puts on one point (zero-length boundary edges) give zero-area
+/// triangles: then the boundary is spaced evenly. FLIPPED if round-off still
+/// leaves a face without positive area.
 inline Embedding_status disk_charts_embedding(const Chart_mesh& mesh, UV_vector& x)
 {
   int number_of_charts = 0;
@@ -146,7 +157,12 @@ inline Embedding_status disk_charts_embedding(const Chart_mesh& mesh, UV_vector&
     pinned[c].center = Vector2(left + pinned[c].radius, 0.);
     left += 2.2 * pinned[c].radius;
   }
-  return tutte_embedding(mesh, pinned, x) ? Embedding_status::OK : Embedding_status::SOLVE_FAILED;
+  for(Boundary_spacing spacing : {Boundary_spacing::ARC_LENGTH, Boundary_spacing::UNIFORM})
+  {
+    if(!tutte_embedding(mesh, pinned, spacing, x)) return Embedding_status::SOLVE_FAILED;
+    if(number_of_flipped_faces(mesh, x) == 0) return Embedding_status::OK;
+  }
+  return Embedding_status::FLIPPED;
 }
 
 } // namespace cut

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Builds the test suite with AddressSanitizer and UndefinedBehaviorSanitizer
+# (Debug, in build-asan/) and runs it with CTest; any sanitizer report stops
+# the test that triggered it, which then fails.
+#
+#   scripts/sanitizers.sh [extra ctest options...]
+#
+# Debug keeps CGAL's and Eigen's assertions on; test/CMakeLists.txt leaves
+# out the heavy tests in Debug, and check_all_meshes only takes the small
+# meshes. Neither the benchmark nor the examples are built (the examples
+# unwrap whole data meshes: about 9 minutes under the sanitizers for nothing
+# the tests do not cover). Suppressions for third-party reports, if any are
+# ever needed, go to scripts/sanitizers/ (lsan.supp, ubsan.supp).
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+jobs="$(nproc 2>/dev/null || echo 2)"
+build="${ASAN_BUILD_DIR:-build-asan}"
+
+bash scripts/install_dependencies.sh
+
+# -O1 (the optimization AddressSanitizer's documentation advises) keeps the
+# Debug test suite within its per-test time limits; no NDEBUG, so
+# assertions stay on.
+flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON \
+  -DCUT_PARAM_BUILD_BENCHMARK=OFF -DCUT_PARAM_BUILD_EXAMPLES=OFF \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags"
+cmake --build "$build" -j "$jobs"
+
+supp="$root/scripts/sanitizers"
+asan="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
+ubsan="halt_on_error=1:print_stacktrace=1"
+[ -f "$supp/lsan.supp" ] && export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+[ -f "$supp/ubsan.supp" ] && ubsan="$ubsan:suppressions=$supp/ubsan.supp"
+export ASAN_OPTIONS="$asan"
+export UBSAN_OPTIONS="$ubsan"
+
+cd "$build"
+ctest --output-on-failure -j "$jobs" "$@"

@@ -1,0 +1,654 @@
+// check_all_meshes: runs uv_unwrap on every mesh file of some directories
+// (CGAL's data set, the shared benchmark meshes) and checks that each run
+// ends either with a result or with a documented error: never a crash, a
+// hang, a NaN or a flipped face.
+//
+//   check_all_meshes --uv-unwrap PATH [options] DIR_OR_FILE... [-- UV_UNWRAP_OPTIONS...]
+//
+// Per mesh, each step in a child process with a time limit, so that a crash
+// or a hang is reported instead of stopping the run:
+//   1. probe (fork): the input path of uv_unwrap (tools/mesh_input.h) gives
+//      the face count, or the input error uv_unwrap must report;
+//   2. uv_unwrap (fork + exec) with -o OBJ --stats JSON;
+//   3. verify (fork): re-reads the input through the same path and the OBJ:
+//      same vertices (positions bit for bit) and faces (count, order,
+//      corners), finite `vt`, positive signed UV area for every face;
+//   4. determinism: meshes up to --repeat-faces faces are unwrapped a second
+//      time, and both OBJ files must be identical byte for byte.
+// Prints one table row per mesh and a summary; exits with 1 if any mesh
+// crashed, hung, produced a NaN or a flipped face, or otherwise broke the
+// contract (undocumented error, inconsistent output), 0 otherwise.
+#include "mesh_input.h"
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using Clock = std::chrono::steady_clock;
+
+struct Options
+{
+  std::string uv_unwrap;
+  std::vector<std::string> inputs;
+  std::vector<std::string> uv_unwrap_args;
+  std::size_t max_faces = 0;      // 0: no limit
+  std::size_t repeat_faces = 20000;
+  double timeout = 300.;
+  std::string work_dir;
+};
+
+const char* const usage_text =
+  "usage: check_all_meshes --uv-unwrap PATH [options] DIR_OR_FILE... [-- UV_UNWRAP_OPTIONS...]\n"
+  "\n"
+  "Runs uv_unwrap on every .off, .obj, .ply and .stl file (directories are\n"
+  "searched recursively) and checks each result: a documented error or a\n"
+  "valid UV map (finite, flip-free, same vertices and faces as the input).\n"
+  "Exits with 1 on any crash, hang, NaN, flipped face or broken contract.\n"
+  "\n"
+  "options:\n"
+  "  --uv-unwrap PATH     the uv_unwrap executable (required)\n"
+  "  --max-faces N        skip meshes with more than N faces (default 0: no limit)\n"
+  "  --timeout S          time limit per run of uv_unwrap, in seconds (default 300)\n"
+  "  --repeat-faces N     unwrap meshes with at most N faces twice and compare the\n"
+  "                       outputs byte for byte (default 20000; 0: never)\n"
+  "  --work-dir DIR       scratch directory (default: a new one in the temp directory)\n"
+  "  -- ARGS...           passed to uv_unwrap after its own arguments\n";
+
+// ---------------------------------------------------------------- children
+
+struct Child_result
+{
+  enum Kind { EXITED, SIGNALED, TIMED_OUT, NOT_STARTED } kind = NOT_STARTED;
+  int code = 0;        // exit status or signal number
+  std::string output;  // what a forked function wrote to its pipe
+  double seconds = 0.;
+};
+
+// Waits for `pid` for at most `timeout` seconds, reading `fd` (if >= 0) as
+// it goes; kills the child's process group on timeout.
+Child_result wait_for(pid_t pid, int fd, double timeout, Clock::time_point start)
+{
+  Child_result r;
+  char buffer[4096];
+  bool open = fd >= 0;
+  for(;;)
+  {
+    if(open)
+    {
+      pollfd p{fd, POLLIN, 0};
+      if(poll(&p, 1, 20) > 0)
+      {
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if(n > 0) r.output.append(buffer, std::size_t(n));
+        else if(n == 0 || errno != EINTR) open = false;
+      }
+    }
+    else
+      usleep(20000);
+    int status = 0;
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if(done == pid)
+    {
+      while(open)
+      {
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if(n > 0) r.output.append(buffer, std::size_t(n));
+        else open = false;
+      }
+      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if(WIFSIGNALED(status)) { r.kind = Child_result::SIGNALED; r.code = WTERMSIG(status); }
+      else { r.kind = Child_result::EXITED; r.code = WEXITSTATUS(status); }
+      break;
+    }
+    if(std::chrono::duration<double>(Clock::now() - start).count() > timeout)
+    {
+      kill(-pid, SIGKILL);
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      r.kind = Child_result::TIMED_OUT;
+      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      break;
+    }
+  }
+  if(fd >= 0) close(fd);
+  return r;
+}
+
+// Runs `task` in a forked child; what it returns is sent back through a pipe.
+template <typename Task>
+Child_result run_forked(Task task, double timeout)
+{
+  int fds[2];
+  if(pipe(fds) != 0) return {};
+  std::cout.flush();
+  std::cerr.flush();
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if(pid < 0) { close(fds[0]); close(fds[1]); return {}; }
+  if(pid == 0)
+  {
+    setpgid(0, 0);
+    close(fds[0]);
+    std::string message;
+    int code = 0;
+    try { message = task(); }
+    catch(const std::exception& e) { message = std::string("EXCEPTION ") + e.what(); code = 3; }
+    const char* p = message.data();
+    std::size_t left = message.size();
+    while(left > 0)
+    {
+      const ssize_t n = write(fds[1], p, left);
+      if(n <= 0) break;
+      p += n;
+      left -= std::size_t(n);
+    }
+    close(fds[1]);
+    _exit(code);
+  }
+  close(fds[1]);
+  return wait_for(pid, fds[0], timeout, start);
+}
+
+// Runs a program with its output in `log`.
+Child_result run_program(const std::vector<std::string>& args, const std::string& log, double timeout)
+{
+  std::cout.flush();
+  std::cerr.flush();
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if(pid < 0) return {};
+  if(pid == 0)
+  {
+    setpgid(0, 0);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if(fd >= 0) { dup2(fd, 1); dup2(fd, 2); close(fd); }
+    std::vector<char*> argv;
+    for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return wait_for(pid, -1, timeout, start);
+}
+
+std::string describe(const Child_result& r)
+{
+  switch(r.kind)
+  {
+    case Child_result::SIGNALED: return std::string("signal ") + std::to_string(r.code) + " (" + strsignal(r.code) + ")";
+    case Child_result::TIMED_OUT: return "no result after " + std::to_string(int(r.seconds)) + " s";
+    case Child_result::NOT_STARTED: return "could not start a process";
+    default: return "exit status " + std::to_string(r.code);
+  }
+}
+
+// ---------------------------------------------------------------- files
+
+std::string read_file(const std::string& filename)
+{
+  std::ifstream in(filename, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Value of "key" in the flat JSON uv_unwrap writes: the raw text of a
+// number, null, or the unescaped content of a string. Empty if absent.
+std::string json_value(const std::string& json, const std::string& key)
+{
+  const std::string tag = "\"" + key + "\":";
+  std::size_t p = json.find(tag);
+  if(p == std::string::npos) return {};
+  p += tag.size();
+  while(p < json.size() && json[p] == ' ') ++p;
+  if(p < json.size() && json[p] == '"')
+  {
+    std::string s;
+    for(++p; p < json.size() && json[p] != '"'; ++p)
+    {
+      if(json[p] == '\\' && p + 1 < json.size()) ++p;
+      s += json[p];
+    }
+    return s;
+  }
+  const std::size_t end = json.find_first_of(",\n}", p);
+  return json.substr(p, end == std::string::npos ? std::string::npos : end - p);
+}
+
+std::size_t json_array_size(const std::string& json, const std::string& key)
+{
+  const std::size_t p = json.find("\"" + key + "\": [");
+  if(p == std::string::npos) return 0;
+  const std::size_t end = json.find(']', p);
+  const std::string body = json.substr(p, end - p);
+  std::size_t n = 0;
+  bool in_string = false;
+  for(std::size_t i = body.find('[') + 1; i < body.size(); ++i)
+  {
+    if(body[i] == '\\') { ++i; continue; }
+    if(body[i] == '"') { if(!in_string) ++n; in_string = !in_string; }
+  }
+  return n;
+}
+
+bool is_mesh_file(const fs::path& p)
+{
+  std::string ext = p.extension().string();
+  for(char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
+}
+
+// ---------------------------------------------------------------- checks
+
+// Statuses uv_unwrap may end with on purpose: the input path's and the library's.
+bool is_documented_status(const std::string& status)
+{
+  const auto& input = mesh_input::input_error_statuses();
+  if(std::find(input.begin(), input.end(), status) != input.end()) return true;
+  for(int code = 0; code <= int(SMP::ERROR_CANCELED); ++code)
+    if(status == SMP::error_name(SMP::Error_code(code)) && status != "ok" && status != "ERROR_CANCELED")
+      return true;
+  return false;
+}
+
+// Probe: the input path alone. "OK faces vertices" or "ERR status message".
+std::string probe(const std::string& file)
+{
+  mesh_input::Mesh mesh;
+  mesh_input::Input_report report;
+  try
+  {
+    mesh_input::read_input_mesh(file, mesh, report);
+  }
+  catch(const mesh_input::Input_error& e)
+  {
+    return "ERR " + e.status + " " + e.what();
+  }
+  return "OK " + std::to_string(num_faces(mesh)) + " " + std::to_string(num_vertices(mesh));
+}
+
+// Verify: the OBJ against the mesh the input path gives. "OK" or "FAIL kind: reason"
+// with kind NAN, FLIP or OUTPUT.
+std::string verify(const std::string& input, const std::string& obj_file)
+{
+  mesh_input::Mesh mesh;
+  mesh_input::Input_report report;
+  mesh_input::read_input_mesh(input, mesh, report);
+
+  std::ifstream in(obj_file);
+  if(!in) return "FAIL OUTPUT: no OBJ written";
+  std::vector<std::array<double, 3>> v;
+  std::vector<std::array<double, 2>> vt;
+  std::vector<std::vector<std::pair<long, long>>> f;
+  std::string line, word;
+  while(std::getline(in, line))
+  {
+    std::istringstream s(line);
+    if(!(s >> word)) continue;
+    if(word == "v")
+    {
+      std::array<double, 3> p{};
+      std::string x, y, z;
+      if(!(s >> x >> y >> z)) return "FAIL OUTPUT: bad v line '" + line + "'";
+      p = {std::strtod(x.c_str(), nullptr), std::strtod(y.c_str(), nullptr), std::strtod(z.c_str(), nullptr)};
+      v.push_back(p);
+    }
+    else if(word == "vt")
+    {
+      std::string a, b;
+      if(!(s >> a >> b)) return "FAIL OUTPUT: bad vt line '" + line + "'";
+      vt.push_back({std::strtod(a.c_str(), nullptr), std::strtod(b.c_str(), nullptr)});
+    }
+    else if(word == "f")
+    {
+      std::vector<std::pair<long, long>> corners;
+      while(s >> word)
+      {
+        const std::size_t slash = word.find('/');
+        if(slash == std::string::npos) return "FAIL OUTPUT: face corner without vt: '" + line + "'";
+        corners.emplace_back(std::atol(word.c_str()), std::atol(word.c_str() + slash + 1));
+      }
+      f.push_back(corners);
+    }
+  }
+
+  if(v.size() != num_vertices(mesh))
+    return "FAIL OUTPUT: " + std::to_string(v.size()) + " vertices written, input has " +
+           std::to_string(num_vertices(mesh));
+  if(f.size() != num_faces(mesh))
+    return "FAIL OUTPUT: " + std::to_string(f.size()) + " faces written, input has " +
+           std::to_string(num_faces(mesh));
+  std::size_t i = 0;
+  for(auto vd : vertices(mesh))
+  {
+    const auto& p = mesh.point(vd);
+    if(v[i][0] != p.x() || v[i][1] != p.y() || v[i][2] != p.z())
+      return "FAIL OUTPUT: vertex " + std::to_string(i) + " moved";
+    ++i;
+  }
+  std::size_t nan_vt = 0;
+  for(const auto& t : vt)
+    if(!std::isfinite(t[0]) || !std::isfinite(t[1])) ++nan_vt;
+  if(nan_vt > 0) return "FAIL NAN: " + std::to_string(nan_vt) + " non-finite vt";
+
+  std::size_t k = 0, flipped = 0, first_flipped = 0;
+  for(auto fd : faces(mesh))
+  {
+    const auto& corners = f[k];
+    if(corners.size() != 3) return "FAIL OUTPUT: face " + std::to_string(k) + " is not a triangle";
+    auto h = mesh.halfedge(fd);
+    std::array<std::array<double, 2>, 3> uv;
+    for(int c = 0; c < 3; ++c, h = mesh.next(h))
+    {
+      if(corners[c].first != long(mesh.target(h).idx()) + 1)
+        return "FAIL OUTPUT: face " + std::to_string(k) + " differs from the input's";
+      if(corners[c].second < 1 || std::size_t(corners[c].second) > vt.size())
+        return "FAIL OUTPUT: face " + std::to_string(k) + " has an invalid vt index";
+      uv[c] = vt[std::size_t(corners[c].second) - 1];
+    }
+    // the library's test of a flip, on the corners in the same order
+    const double area2 = (uv[1][0] - uv[0][0]) * (uv[2][1] - uv[0][1]) - (uv[1][1] - uv[0][1]) * (uv[2][0] - uv[0][0]);
+    if(!(area2 > 0.) && flipped++ == 0) first_flipped = k;
+    ++k;
+  }
+  if(flipped > 0)
+    return "FAIL FLIP: " + std::to_string(flipped) + " UV faces with non-positive area (first: face " +
+           std::to_string(first_flipped) + ")";
+  return "OK";
+}
+
+// ---------------------------------------------------------------- table
+
+struct Row
+{
+  std::string mesh, faces = "-", status, time = "-", distortion = "-", seam = "-", charts = "-", warnings = "-";
+};
+
+std::string fixed(const std::string& number, int digits)
+{
+  if(number.empty() || number == "null") return number.empty() ? "-" : "null";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << std::strtod(number.c_str(), nullptr);
+  return out.str();
+}
+
+void print_row(const Row& r)
+{
+  std::cout << std::left << std::setw(34) << r.mesh.substr(0, 33) << std::right << std::setw(8) << r.faces
+            << std::setw(8) << r.time << std::setw(9) << r.distortion << std::setw(8) << r.seam
+            << std::setw(7) << r.charts << std::setw(5) << r.warnings << "  " << r.status << std::endl;
+}
+
+bool parse_arguments(int argc, char** argv, Options& options)
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw std::runtime_error("option " + arg + " needs a value");
+      return argv[++i];
+    };
+    auto count = [&]() -> std::size_t {
+      const std::string v = value();
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if(end == v.c_str() || *end || !(x >= 0.) || x != std::floor(x))
+        throw std::runtime_error("invalid value '" + v + "' for " + arg);
+      return std::size_t(x);
+    };
+    if(arg == "-h" || arg == "--help") { std::cout << usage_text; return false; }
+    else if(arg == "--uv-unwrap") options.uv_unwrap = value();
+    else if(arg == "--max-faces") options.max_faces = count();
+    else if(arg == "--repeat-faces") options.repeat_faces = count();
+    else if(arg == "--timeout") options.timeout = double(count());
+    else if(arg == "--work-dir") options.work_dir = value();
+    else if(arg == "--")
+    {
+      options.uv_unwrap_args.assign(argv + i + 1, argv + argc);
+      break;
+    }
+    else if(arg.size() > 1 && arg[0] == '-') throw std::runtime_error("unknown option '" + arg + "'");
+    else options.inputs.push_back(arg);
+  }
+  if(options.uv_unwrap.empty()) throw std::runtime_error("--uv-unwrap PATH is required");
+  if(options.inputs.empty()) throw std::runtime_error("no mesh file or directory given");
+  if(!(options.timeout > 0.)) throw std::runtime_error("--timeout must be positive");
+  return true;
+}
+
+int run(const Options& options)
+{
+  std::vector<std::pair<std::string, fs::path>> meshes; // (name shown, path)
+  for(const std::string& input : options.inputs)
+  {
+    const fs::path root(input);
+    if(fs::is_directory(root))
+    {
+      std::vector<fs::path> found;
+      for(const auto& entry : fs::recursive_directory_iterator(root))
+        if(entry.is_regular_file() && is_mesh_file(entry.path())) found.push_back(entry.path());
+      std::sort(found.begin(), found.end());
+      for(const fs::path& p : found)
+        meshes.emplace_back((root.filename().empty() ? root.parent_path().filename() : root.filename()).string() +
+                              "/" + fs::relative(p, root).string(), p);
+    }
+    else if(fs::is_regular_file(root))
+      meshes.emplace_back(root.filename().string(), root);
+    else
+      throw std::runtime_error("no such file or directory: " + input);
+  }
+
+  fs::path work = options.work_dir.empty()
+                    ? fs::temp_directory_path() / ("check_all_meshes_" + std::to_string(getpid()))
+                    : fs::path(options.work_dir);
+  fs::create_directories(work);
+  const std::string obj = (work / "out.obj").string(), obj2 = (work / "out2.obj").string(),
+                    json = (work / "out.json").string(), log = (work / "log.txt").string();
+  const std::string exe = fs::absolute(options.uv_unwrap).string();
+  if(access(exe.c_str(), X_OK) != 0) throw std::runtime_error("cannot execute " + exe);
+
+  std::cout << "check_all_meshes: " << meshes.size() << " mesh files; time limit " << options.timeout
+            << " s per run; "
+            << (options.max_faces ? "skipping meshes above " + std::to_string(options.max_faces) + " faces"
+                                  : std::string("no face limit"))
+            << "; determinism checked up to " << options.repeat_faces << " faces\n\n";
+  Row header{"mesh", "faces", "status", "time", "E_d", "E_s", "charts", "warn"};
+  print_row(header);
+  std::cout << std::string(100, '-') << std::endl;
+
+  std::map<std::string, int> counts;         // ok, skipped, rejected: X, crash, hang, nan, flip, fail
+  std::vector<std::string> problems;         // failing meshes with the reason
+  double total_time = 0.;
+  int deterministic = 0;                     // ok meshes unwrapped twice, identical outputs
+  const auto started = Clock::now();
+
+  for(const auto& [name, path] : meshes)
+  {
+    Row row;
+    row.mesh = name;
+    const std::string file = path.string();
+    auto problem = [&](const std::string& kind, const std::string& why) {
+      ++counts[kind];
+      row.status = kind + ": " + why;
+      problems.push_back(name + ": " + row.status);
+    };
+
+    // 1. probe
+    const Child_result p = run_forked([&] { return probe(file); }, options.timeout);
+    std::string probe_status;
+    if(p.kind != Child_result::EXITED || p.code != 0)
+    {
+      problem(p.kind == Child_result::TIMED_OUT ? "HANG" : "CRASH", "reading the input: " + describe(p));
+      print_row(row);
+      continue;
+    }
+    std::istringstream ps(p.output);
+    std::string head;
+    ps >> head;
+    std::size_t faces = 0;
+    if(head == "OK")
+    {
+      ps >> faces;
+      row.faces = std::to_string(faces);
+      if(options.max_faces > 0 && faces > options.max_faces)
+      {
+        ++counts["skipped"];
+        row.status = "skipped (more than " + std::to_string(options.max_faces) + " faces)";
+        print_row(row);
+        continue;
+      }
+    }
+    else
+      ps >> probe_status;
+
+    // 2. uv_unwrap
+    std::error_code ec;
+    fs::remove(obj, ec);
+    fs::remove(json, ec);
+    std::vector<std::string> args = {exe, file, "-q", "-o", obj, "--stats", json};
+    args.insert(args.end(), options.uv_unwrap_args.begin(), options.uv_unwrap_args.end());
+    const Child_result u = run_program(args, log, options.timeout);
+    row.time = fixed(std::to_string(u.seconds), 1);
+    total_time += u.seconds;
+    const std::string stats = read_file(json);
+    const std::string status = json_value(stats, "status");
+    if(!stats.empty() && status == "ok")
+    {
+      row.distortion = fixed(json_value(stats, "distortion"), 3);
+      row.seam = fixed(json_value(stats, "seam_length"), 2);
+      row.charts = json_value(stats, "charts");
+      row.warnings = std::to_string(json_array_size(stats, "warnings"));
+    }
+    std::string last_line = read_file(log);
+    while(!last_line.empty() && last_line.back() == '\n') last_line.pop_back();
+    last_line = last_line.substr(last_line.rfind('\n') == std::string::npos ? 0 : last_line.rfind('\n') + 1);
+
+    if(u.kind == Child_result::TIMED_OUT) { problem("HANG", "uv_unwrap: " + describe(u)); print_row(row); continue; }
+    if(u.kind == Child_result::SIGNALED) { problem("CRASH", "uv_unwrap: " + describe(u)); print_row(row); continue; }
+    if(u.kind != Child_result::EXITED) { problem("FAIL", describe(u)); print_row(row); continue; }
+    if(u.code != 0)
+    {
+      if(u.code != 1) problem("FAIL", "uv_unwrap: " + describe(u) + ": " + last_line);
+      else if(status.empty()) problem("FAIL", "error without statistics: " + last_line);
+      else if(!is_documented_status(status)) problem("FAIL", "undocumented status " + status + ": " + last_line);
+      else if(!probe_status.empty() && status != probe_status)
+        problem("FAIL", "uv_unwrap says " + status + ", the input path " + probe_status);
+      else
+      {
+        ++counts["rejected: " + status];
+        // the message without its "uv_unwrap: error: " prefix and file name
+        std::string why = last_line.substr(std::min(last_line.size(), std::string("uv_unwrap: error: ").size()));
+        const std::size_t quote = why.find(file + "'");
+        if(quote != std::string::npos) why = why.substr(quote + file.size() + 1);
+        while(!why.empty() && (why[0] == ':' || why[0] == ' ')) why.erase(0, 1);
+        row.status = "rejected: " + status + " (" + why.substr(0, 70) + ")";
+      }
+      print_row(row);
+      continue;
+    }
+    if(!probe_status.empty()) { problem("FAIL", "uv_unwrap accepted an input the probe rejects (" + probe_status + ")"); print_row(row); continue; }
+    if(status != "ok") { problem("FAIL", "exit status 0 with status '" + status + "'"); print_row(row); continue; }
+
+    // 3. verify
+    const Child_result v = run_forked([&] { return verify(file, obj); }, options.timeout);
+    if(v.kind != Child_result::EXITED || v.code != 0)
+    {
+      problem(v.kind == Child_result::TIMED_OUT ? "HANG" : "CRASH", "verifying: " + describe(v) + " " + v.output);
+      print_row(row);
+      continue;
+    }
+    if(v.output.rfind("FAIL ", 0) == 0)
+    {
+      const std::string rest = v.output.substr(5);
+      const std::string kind = rest.substr(0, rest.find(':'));
+      problem(kind, rest.substr(rest.find(':') + 2));
+      print_row(row);
+      continue;
+    }
+
+    // 4. determinism
+    if(faces <= options.repeat_faces)
+    {
+      std::vector<std::string> again = args;
+      again[4] = obj2;
+      again[6] = (work / "out2.json").string();
+      const Child_result w = run_program(again, log, options.timeout);
+      if(w.kind != Child_result::EXITED || w.code != 0)
+      {
+        problem(w.kind == Child_result::TIMED_OUT ? "HANG" : "FAIL", "second run: " + describe(w));
+        print_row(row);
+        continue;
+      }
+      if(read_file(obj) != read_file(obj2))
+      {
+        problem("FAIL", "two runs wrote different OBJ files (not deterministic)");
+        print_row(row);
+        continue;
+      }
+      ++deterministic;
+    }
+    ++counts["ok"];
+    row.status = "ok";
+    print_row(row);
+  }
+
+  const double wall = std::chrono::duration<double>(Clock::now() - started).count();
+  std::cout << std::string(100, '-') << "\n"
+            << "summary: " << meshes.size() << " mesh files, " << std::fixed << std::setprecision(0) << wall
+            << " s in total (" << total_time << " s in uv_unwrap)\n";
+  for(const auto& [kind, n] : counts)
+    std::cout << "  " << std::left << std::setw(44) << kind << std::right << std::setw(5) << n << "\n";
+  std::cout << "  (" << deterministic << " of the ok meshes unwrapped twice: identical OBJ files)\n";
+  if(!problems.empty())
+  {
+    std::cout << "\nproblems:\n";
+    for(const std::string& p : problems) std::cout << "  " << p << "\n";
+  }
+  std::cout << std::endl;
+
+  std::error_code ignored;
+  if(options.work_dir.empty()) fs::remove_all(work, ignored);
+  return problems.empty() ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  try
+  {
+    if(!parse_arguments(argc, argv, options)) return 0;
+    return run(options);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "check_all_meshes: error: " << e.what() << std::endl;
+    return 2;
+  }
+}
