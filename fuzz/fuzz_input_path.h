@@ -70,7 +70,7 @@ inline void unwrap_and_check(const mesh_input::Mesh& mesh)
   const std::string name = SMP::error_name(result.error);
   if(name == "ERROR_UNKNOWN") violation("unknown error code " + std::to_string(int(result.error)));
   if(result.error == SMP::ERROR_EMPTY_MESH || result.error == SMP::ERROR_NON_TRIANGULAR_MESH ||
-     result.error == SMP::ERROR_NON_FINITE_COORDINATE)
+     result.error == SMP::ERROR_NON_FINITE_COORDINATE || result.error == SMP::ERROR_NON_MANIFOLD)
     violation("the input path accepted a mesh the library rejects with " + name);
   if(!result.ok()) return;
 

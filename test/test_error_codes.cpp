@@ -369,6 +369,9 @@ CUT_TYPED_TEST(degenerate_faces_clamped_or_rejected, Mesh_types)
   clamped.run();
   check_cut_result(mesh, clamped);
   CHECK_EQ(clamped.result.number_of_degenerate_faces, std::size_t(2));
+  std::size_t flagged = 0;
+  for(auto f : faces(mesh)) flagged += SMP::is_degenerate_face(f, mesh) ? 1 : 0;
+  CHECK_EQ(flagged, std::size_t(2));
   Cut_run<TestType> strict(mesh);
   CHECK_EQ(strict.run(SMP::parameters::reject_degenerate_faces(true)).error, SMP::ERROR_DEGENERATE_FACE);
   CHECK_EQ(strict.number_of_seam_edges(), std::size_t(0));

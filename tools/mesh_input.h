@@ -66,6 +66,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include <algorithm>
 #include <array>
@@ -958,33 +959,6 @@ inline bool triangulate_face(Mesh::Face_index f, Mesh& mesh)
 
 } // namespace detail
 
-/// Relative height below which a face counts as degenerate: the rule of the
-/// library (Chart_mesh::set_rest_shape(), which clamps such faces), with the
-/// same corner order (corner 0 at the target of halfedge(f)).
-inline bool is_degenerate_face(Mesh::Face_index f, const Mesh& mesh)
-{
-  const double ratio = 1e-4;
-  const auto h = mesh.halfedge(f);
-  const Point_3& p0 = mesh.point(mesh.target(h));
-  const Point_3& p1 = mesh.point(mesh.target(mesh.next(h)));
-  const Point_3& p2 = mesh.point(mesh.target(mesh.next(mesh.next(h))));
-  const Kernel::Vector_3 e01 = p1 - p0, e02 = p2 - p0, e12 = p2 - p1;
-  const double l01 = std::sqrt(e01.squared_length()), l02 = std::sqrt(e02.squared_length()),
-               l12 = std::sqrt(e12.squared_length());
-  const double lmax = (std::max)({l01, l02, l12});
-  if(!(lmax > 0.) || !std::isfinite(lmax)) return true;
-  const double floor = ratio * lmax;
-  if(l01 < floor) return true;
-  const double twice_area = std::sqrt(CGAL::cross_product(e01, e02).squared_length());
-  double height = twice_area / l01;
-  if(!std::isfinite(twice_area))
-  {
-    const double x = (l01 * l01 + l02 * l02 - l12 * l12) / (2. * l01);
-    height = std::sqrt((std::max)(0., l02 * l02 - x * x));
-  }
-  return !(height >= floor);
-}
-
 /// Reads, validates and repairs `filename` into `mesh` (cleared first).
 /// Throws Input_error; fills `report` (warnings included) otherwise.
 inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& report)
@@ -1076,7 +1050,7 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
 
   std::size_t first_degenerate = 0;
   for(Mesh::Face_index f : faces(mesh))
-    if(is_degenerate_face(f, mesh) && report.degenerate_faces++ == 0) first_degenerate = std::size_t(f);
+    if(CGAL::Surface_mesh_parameterization::is_degenerate_face(f, mesh) && report.degenerate_faces++ == 0) first_degenerate = std::size_t(f);
   if(report.degenerate_faces > 0)
     report.warnings.push_back(std::to_string(report.degenerate_faces) +
                               " degenerate faces (zero area or needle; first: face " +

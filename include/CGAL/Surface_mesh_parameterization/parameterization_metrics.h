@@ -149,6 +149,27 @@ std::size_t number_of_flipped_faces(const TriangleMesh& mesh, const UVMap& uvmap
 
 /// \ingroup PkgCutParameterizationRef
 ///
+/// True if face `f` is degenerate: zero area, a needle or coincident corners,
+/// i.e. its height is below 1e-4 times its longest side. Such faces are
+/// clamped by `cut_and_parameterize()` (or refused with its
+/// `reject_degenerate_faces` option) and have no weight in
+/// `distortion_energy()`.
+/// Named parameters: `vertex_point_map` (CGAL).
+/// \pre `f` is a triangle
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_degenerate_face(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto vpm = internal::cut::vertex_points(mesh, np);
+  const auto h = halfedge(f, mesh), h1 = next(h, mesh), h2 = next(h1, mesh);
+  CGAL_precondition(next(h2, mesh) == h);
+  return internal::cut::is_degenerate_triangle(internal::cut::to_vector3(get(vpm, target(h, mesh))),
+                                               internal::cut::to_vector3(get(vpm, target(h1, mesh))),
+                                               internal::cut::to_vector3(get(vpm, target(h2, mesh))));
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
 /// Total 3D area of the mesh's faces.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double surface_area(const TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())

@@ -22,6 +22,42 @@ using Vector3 = Eigen::Vector3d;
 using Vector2 = Eigen::Vector2d;
 using UV_vector = Eigen::VectorXd; // (u0, v0, u1, v1, ...)
 
+/// Relative height below which a face counts as degenerate (see rest_shape()).
+constexpr double degenerate_ratio = 1e-4;
+
+/// Rest shape of a triangle as the 2D edge matrix [[l01, x], [0, y]],
+/// rebuilt from its 3D corners. A degenerate triangle (zero area, a needle,
+/// coincident corners) gets its height and first side clamped to
+/// `degenerate_ratio` times its longest side (or `fallback_length` if all
+/// corners coincide), so no NaN or infinity can come out of it. Returns true
+/// iff the triangle was clamped.
+inline bool rest_shape(const Vector3& p0, const Vector3& p1, const Vector3& p2, double fallback_length,
+                       Matrix2& rest)
+{
+  double l01 = (p1 - p0).norm(), l02 = (p2 - p0).norm(), l12 = (p2 - p1).norm();
+  const double lmax = (std::max)({l01, l02, l12});
+  const double scale = (lmax > 0. && std::isfinite(lmax)) ? lmax : fallback_length;
+  const double floor = degenerate_ratio * scale;
+  bool clamped = !(lmax > 0.) || !std::isfinite(lmax);
+  if(clamped) l01 = l02 = l12 = scale;
+  if(l01 < floor) { l01 = floor; clamped = true; }
+  const double x = (l01 * l01 + l02 * l02 - l12 * l12) / (2. * l01);
+  double y = std::sqrt((std::max)(0., l02 * l02 - x * x));
+  // the height from the 3D cross product is more accurate than from lengths
+  const double twice_area = (p1 - p0).cross(p2 - p0).norm();
+  if(!clamped && std::isfinite(twice_area)) y = twice_area / l01;
+  if(y < floor) { y = floor; clamped = true; }
+  rest << l01, x, 0., y;
+  return clamped;
+}
+
+/// True if rest_shape() clamps the triangle.
+inline bool is_degenerate_triangle(const Vector3& p0, const Vector3& p1, const Vector3& p2)
+{
+  Matrix2 rest;
+  return rest_shape(p0, p1, p2, 1., rest);
+}
+
 struct Chart_mesh
 {
   std::vector<std::array<int, 3>> faces; // UV-vertex index of each corner
@@ -31,35 +67,15 @@ struct Chart_mesh
 
   std::size_t number_of_faces() const { return faces.size(); }
 
-  /// Relative height below which a face counts as degenerate (see set_rest_shape()).
-  static constexpr double degenerate_ratio = 1e-4;
-
-  /// Sets the rest shape of face f from its 3D corners, as a 2D triangle
-  /// rebuilt from its edge lengths. A degenerate face (zero area, a needle,
-  /// coincident corners) gets its height and shortest sides clamped to
-  /// `degenerate_ratio` times its longest side (or `fallback_length` if all
-  /// corners coincide), so no NaN or infinity can come out of it; its area
-  /// becomes the clamped one. Returns true iff the face was clamped.
+  /// Sets the rest shape of face f from its 3D corners (rest_shape());
+  /// returns true iff the face was clamped as degenerate.
   bool set_rest_shape(std::size_t f, const Vector3& p0, const Vector3& p1, const Vector3& p2,
                       double fallback_length = 1.)
   {
-    double l01 = (p1 - p0).norm(), l02 = (p2 - p0).norm(), l12 = (p2 - p1).norm();
-    const double lmax = (std::max)({l01, l02, l12});
-    const double scale = (lmax > 0. && std::isfinite(lmax)) ? lmax : fallback_length;
-    const double floor = degenerate_ratio * scale;
-    bool clamped = !(lmax > 0.) || !std::isfinite(lmax);
-    if(clamped) l01 = l02 = l12 = scale;
-    if(l01 < floor) { l01 = floor; clamped = true; }
-    const double x = (l01 * l01 + l02 * l02 - l12 * l12) / (2. * l01);
-    double y = std::sqrt((std::max)(0., l02 * l02 - x * x));
-    // the height from the 3D cross product is more accurate than from lengths
-    const double twice_area = (p1 - p0).cross(p2 - p0).norm();
-    if(!clamped && std::isfinite(twice_area)) y = twice_area / l01;
-    if(y < floor) { y = floor; clamped = true; }
     Matrix2 rest;
-    rest << l01, x, 0., y;
+    const bool clamped = rest_shape(p0, p1, p2, fallback_length, rest);
     rest_inverse[f] = rest.inverse();
-    area[f] = 0.5 * l01 * y;
+    area[f] = 0.5 * rest(0, 0) * rest(1, 1);
     return clamped;
   }
 

@@ -160,17 +160,13 @@ double mean_face_edge_length(const Indexed_surface<TriangleMesh>& surface)
   return sum > 0. && std::isfinite(sum) ? sum / n_face_edges : 1.;
 }
 
-/// Faces that Chart_mesh::set_rest_shape() would clamp.
+/// Faces that Chart_mesh::set_rest_shape() clamps.
 template <typename TriangleMesh>
 std::size_t number_of_degenerate_faces(const Indexed_surface<TriangleMesh>& surface)
 {
-  const double mean_edge = mean_face_edge_length(surface);
-  Chart_mesh probe;
-  probe.resize_faces(1);
   std::size_t degenerate = 0;
   for(const auto& cv : surface.corner_vertex)
-    if(probe.set_rest_shape(0, surface.points[cv[0]], surface.points[cv[1]], surface.points[cv[2]], mean_edge))
-      ++degenerate;
+    if(is_degenerate_triangle(surface.points[cv[0]], surface.points[cv[1]], surface.points[cv[2]])) ++degenerate;
   return degenerate;
 }
 
