@@ -10,6 +10,7 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -46,25 +47,33 @@ Vector3 to_vector3(const Point& p)
   return Vector3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
+/// 3D corners of triangle f, corner k at the target of h_k (h_0 = halfedge(f)).
+template <typename TriangleMesh, typename VertexPointMap>
+std::array<Vector3, 3> face_corners(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                                    const TriangleMesh& mesh, const VertexPointMap& vpm)
+{
+  const auto h = halfedge(f, mesh), h1 = next(h, mesh), h2 = next(h1, mesh);
+  CGAL_precondition(next(h2, mesh) == h);
+  return {to_vector3(get(vpm, target(h, mesh))), to_vector3(get(vpm, target(h1, mesh))),
+          to_vector3(get(vpm, target(h2, mesh)))};
+}
+
 /// 3D area and UV Jacobian of face f; the Jacobian is NaN for a degenerate
-/// face (see Chart_mesh::set_rest_shape()).
+/// face (see rest_shape()).
 template <typename TriangleMesh, typename UVMap, typename VertexPointMap>
 std::pair<double, Matrix2> face_area_and_jacobian(
   typename boost::graph_traits<TriangleMesh>::face_descriptor f,
   const TriangleMesh& mesh, const UVMap& uvmap, const VertexPointMap& vpm)
 {
-  auto h = halfedge(f, mesh);
-  const auto h1 = next(h, mesh), h2 = next(h1, mesh);
-  Chart_mesh one;
-  one.resize_faces(1);
-  const Vector3 p0 = to_vector3(get(vpm, target(h, mesh))), p1 = to_vector3(get(vpm, target(h1, mesh))),
-                p2 = to_vector3(get(vpm, target(h2, mesh)));
-  if(one.set_rest_shape(0, p0, p1, p2))
-    return {0.5 * (p1 - p0).cross(p2 - p0).norm(), Matrix2::Constant(std::numeric_limits<double>::quiet_NaN())};
+  const std::array<Vector3, 3> p = face_corners(f, mesh, vpm);
+  Matrix2 rest;
+  if(rest_shape(p[0], p[1], p[2], 1., rest))
+    return {0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm(), Matrix2::Constant(std::numeric_limits<double>::quiet_NaN())};
+  const auto h = halfedge(f, mesh), h1 = next(h, mesh), h2 = next(h1, mesh);
   const Vector2 u0 = corner_uv(mesh, uvmap, h), u1 = corner_uv(mesh, uvmap, h1), u2 = corner_uv(mesh, uvmap, h2);
   Matrix2 D;
   D << u1.x() - u0.x(), u2.x() - u0.x(), u1.y() - u0.y(), u2.y() - u0.y();
-  return {one.area[0], D * one.rest_inverse[0]};
+  return {0.5 * rest(0, 0) * rest(1, 1), D * rest.inverse()};
 }
 
 template <typename TriangleMesh, typename NamedParameters>
@@ -160,12 +169,8 @@ template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::De
 bool is_degenerate_face(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const auto vpm = internal::cut::vertex_points(mesh, np);
-  const auto h = halfedge(f, mesh), h1 = next(h, mesh), h2 = next(h1, mesh);
-  CGAL_precondition(next(h2, mesh) == h);
-  return internal::cut::is_degenerate_triangle(internal::cut::to_vector3(get(vpm, target(h, mesh))),
-                                               internal::cut::to_vector3(get(vpm, target(h1, mesh))),
-                                               internal::cut::to_vector3(get(vpm, target(h2, mesh))));
+  const auto p = internal::cut::face_corners(f, mesh, internal::cut::vertex_points(mesh, np));
+  return internal::cut::is_degenerate_triangle(p[0], p[1], p[2]);
 }
 
 /// \ingroup PkgCutParameterizationRef

@@ -149,15 +149,17 @@ Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
   return Indexing_status::OK;
 }
 
-/// Mean length of the face edges (an edge inside counts twice); 1 if all are
-/// zero. The fallback size of faces whose corners coincide.
+/// Mean 3D edge length ℓ, each edge once; 1 if all edges have zero length.
+/// The unit of the relative parameters, and the size given to faces whose
+/// corners coincide.
 template <typename TriangleMesh>
-double mean_face_edge_length(const Indexed_surface<TriangleMesh>& surface)
+double mean_edge_length(const Indexed_surface<TriangleMesh>& surface)
 {
-  const int n_face_edges = int(3 * surface.number_of_faces());
   double sum = 0.;
-  for(int fe = 0; fe < n_face_edges; ++fe) sum += surface.edge_length(fe);
-  return sum > 0. && std::isfinite(sum) ? sum / n_face_edges : 1.;
+  int n = 0;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < fe) { sum += surface.edge_length(fe); ++n; }
+  return sum > 0. && std::isfinite(sum) ? sum / n : 1.;
 }
 
 /// Faces that Chart_mesh::set_rest_shape() clamps.
@@ -205,7 +207,7 @@ std::size_t build_chart_mesh(const Indexed_surface<TriangleMesh>& surface, const
   chart = Chart_mesh();
   chart.number_of_vertices = n;
   chart.resize_faces(surface.number_of_faces());
-  const double mean_edge = mean_face_edge_length(surface);
+  const double mean_edge = mean_edge_length(surface);
   std::size_t degenerate = 0;
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
   {

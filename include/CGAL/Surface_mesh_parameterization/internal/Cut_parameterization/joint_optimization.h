@@ -75,16 +75,6 @@ struct Joint_state
   double initial_distortion = 0.;
 };
 
-template <typename Surface>
-double mean_edge_length(const Surface& surface)
-{
-  double sum = 0.;
-  int n = 0;
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-    if(surface.twin[fe] < fe) { sum += surface.edge_length(fe); ++n; }
-  return n > 0 ? sum / n : 1.;
-}
-
 /// Cuts the edges of `paths`, then joins any closed slit (a path that does
 /// not reach the boundary) to the boundary by a short path, so every chart
 /// stays a topological disk (make_disks()). Rebuilds the chart mesh and
