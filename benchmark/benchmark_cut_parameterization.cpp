@@ -3,8 +3,9 @@
 // paper's Table 1.
 //
 // For every mesh: faces, wall time of the algorithm alone (median of
-// --repeat runs), Newton iterations, charts, flipped faces (recounted on the
-// output), E_d and E_s; then the reference's figures, Table 1's figures, and
+// --repeat runs), Newton iterations, charts, flipped faces and UV border
+// crossings (both recounted on the output), the atlas' coverage of its
+// square (the library's figure), E_d and E_s; then the reference's figures, Table 1's figures, and
 // whether the targets
 //     E_d <= ref E_d + 0.03      and      E_s <= 1.25 ref E_s + 0.05
 // are met, with the speed ratio ref_time / our_time.
@@ -404,8 +405,8 @@ struct Run_result
   bool ran = false;            // the algorithm was called
   bool ok = false;
   double time = NaN;           // median wall time of the algorithm (s)
-  std::size_t newton = 0, charts = 0, flipped = 0;
-  double distortion = NaN, seam_length = NaN;
+  std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
+  double distortion = NaN, seam_length = NaN, coverage = NaN;
   std::string note;
 };
 
@@ -461,8 +462,10 @@ void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& o
   out.charts = first.number_of_charts;
   out.distortion = first.distortion;
   out.seam_length = first.seam_length;
+  out.coverage = first.uv_coverage;
   // The maps hold the last run; with deterministic runs it is the first one.
   out.flipped = SMP::number_of_flipped_faces(mesh, uv);
+  out.crossings = SMP::number_of_border_crossings(mesh, uv);
   if(!varies)
   {
     const double ed = SMP::distortion_energy(mesh, uv);
@@ -667,7 +670,8 @@ int main(int argc, char** argv)
 
   // Table.
   const std::vector<Column> columns = {
-    {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"charts"}, {"flips"}, {"E_d"}, {"E_s"},
+    {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"charts"}, {"flips"}, {"crossings"}, {"coverage"},
+    {"E_d"}, {"E_s"},
     {"ref_t"}, {"ref_E_d"}, {"ref_E_s"}, {"T1_t"}, {"T1_E_d"}, {"T1_E_s"},
     {"E_d_ok"}, {"E_s_ok"}, {"speedup"}, {"status", true}};
   std::vector<std::vector<std::string>> cells;
@@ -683,6 +687,8 @@ int main(int argc, char** argv)
       r.ok ? std::to_string(r.newton) : "-",
       r.ok ? std::to_string(r.charts) : "-",
       r.ok ? std::to_string(r.flipped) : "-",
+      r.ok ? std::to_string(r.crossings) : "-",
+      r.ok ? fixed(r.coverage, 3) : "-",
       r.ok ? fixed(r.distortion, 4) : "-",
       r.ok ? fixed(r.seam_length, 4) : "-",
       m ? fixed(m->time, 3) : "-",
@@ -708,13 +714,14 @@ int main(int argc, char** argv)
   print_table(std::cout, columns, cells);
 
   // Summary.
-  std::size_t compared = 0, passed = 0, failed_runs = 0, with_flips = 0;
+  std::size_t compared = 0, passed = 0, failed_runs = 0, with_flips = 0, with_crossings = 0;
   double log_sum = 0.;
   std::size_t n_speed = 0;
   for(const auto& row : rows)
   {
     if(!row.run.ok) ++failed_runs;
     if(row.run.ok && row.run.flipped > 0) ++with_flips;
+    if(row.run.ok && row.run.crossings > 0) ++with_crossings;
     if(row.ed_pass >= 0 && row.es_pass >= 0)
     {
       ++compared;
@@ -724,6 +731,8 @@ int main(int argc, char** argv)
   }
   std::cout << "\nE_d_ok: E_d <= ref_E_d + " << ED_TOLERANCE << "; E_s_ok: E_s <= " << ES_FACTOR
             << " ref_E_s + " << ES_TOLERANCE << "; speedup = ref_t / time_s\n"
+            << "crossings: pairs of UV border segments that cross (overlaps; 0 for a valid atlas); "
+               "coverage: UV area / area of the packing square\n"
             << "ref_*: reference implementation measured on this machine type "
                "(uvat_reference_measured.csv); T1_*: the paper's Table 1 (paper_table1.csv)\n";
   for(const auto& row : rows)
@@ -751,6 +760,7 @@ int main(int argc, char** argv)
   std::cout << "\nSummary: " << passed << "/" << compared << " meshes pass both targets";
   if(failed_runs) std::cout << " (" << failed_runs << " failed: error or unreadable mesh)";
   if(with_flips) std::cout << "; " << with_flips << " with flipped faces";
+  if(with_crossings) std::cout << "; " << with_crossings << " with border crossings";
   if(!skipped_names.empty()) std::cout << "; " << skipped_names.size() << " skipped (--quick)";
   std::cout << "; geometric-mean speedup vs reference: ";
   if(n_speed) std::cout << fixed(std::exp(log_sum / double(n_speed)), 2) << "x over " << n_speed << " meshes\n";
@@ -761,7 +771,7 @@ int main(int argc, char** argv)
   {
     std::ofstream csv(opt.csv_file);
     if(!csv) { std::cerr << "error: cannot write " << opt.csv_file << "\n"; return 1; }
-    csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,E_d,E_s,"
+    csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,crossings,coverage,E_d,E_s,"
            "ref_time_s,ref_E_d,ref_E_s,paper_time_s,paper_E_d,paper_E_s,"
            "E_d_pass,E_s_pass,speedup,status\n";
     auto pass_csv = [](int p) { return p < 0 ? std::string() : std::to_string(p); };
@@ -778,6 +788,8 @@ int main(int argc, char** argv)
           << (r.ok ? std::to_string(r.newton) : "") << ","
           << (r.ok ? std::to_string(r.charts) : "") << ","
           << (r.ok ? std::to_string(r.flipped) : "") << ","
+          << (r.ok ? std::to_string(r.crossings) : "") << ","
+          << (r.ok ? full(r.coverage) : "") << ","
           << (r.ok ? full(r.distortion) : "") << ","
           << (r.ok ? full(r.seam_length) : "") << ","
           << (m ? full(m->time) : "") << "," << (m ? full(m->distortion) : "") << ","

@@ -13,8 +13,10 @@
 // edges; border halfedges carry their corner's UV), every chart (component
 // of faces joined across uncut interior edges) is a topological disk
 // (χ = 1, one boundary loop, a manifold boundary), the charts' UV bounding
-// boxes are pairwise disjoint, and the reported statistics (charts, seam
-// edges, E_d, E_s) match what the outputs say.
+// boxes are pairwise disjoint, no UV border crosses another (unless the run
+// allowed overlaps), UVs lie in the unit square (unless in world units), and
+// the reported statistics (charts, seam edges, E_d, E_s, crossings, coverage)
+// match what the outputs say.
 #ifndef CUT_PARAM_TEST_CUT_RESULT_CHECKS_H
 #define CUT_PARAM_TEST_CUT_RESULT_CHECKS_H
 
@@ -67,12 +69,35 @@ struct Cut_run
   bool is_seam(edge_descriptor e) const { return seam_storage.at(e); }
   const Point_2& uv(halfedge_descriptor h) const { return uv_storage.at(h); }
 
+  /// The atlas options of the last run (what check_cut_result() expects).
+  bool injective = true, world_units = false;
+
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const SMP_::Cut_and_parameterize_result& run(const NamedParameters& np = CGAL::parameters::default_values())
   {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    injective = choose_parameter(get_parameter(np, SMP_::internal_np::global_injectivity), true);
+    world_units = choose_parameter(get_parameter(np, SMP_::internal_np::world_units), false);
     result = SMP_::cut_and_parameterize(mesh, seams(), uvs(), np);
     return result;
   }
+
+  /// The UVs divided by result.uv_scale: the map in 3D units, whose E_d is result.distortion.
+  struct World_uv_map
+  {
+    using key_type = halfedge_descriptor;
+    using value_type = Point_2;
+    using reference = Point_2;
+    using category = boost::readable_property_map_tag;
+    const Cut_run* run;
+    friend Point_2 get(const World_uv_map& m, const halfedge_descriptor& h)
+    {
+      const Point_2& p = m.run->uv(h);
+      return Point_2(p.x() / m.run->result.uv_scale, p.y() / m.run->result.uv_scale);
+    }
+  };
+  World_uv_map world_uvs() const { return World_uv_map{this}; }
 
   /// Seam flags in the order of edges(mesh).
   std::vector<char> seam_vector() const
@@ -357,9 +382,29 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     }
   CHECK_MSG(overlapping == 0, overlapping << " pairs of charts with overlapping UV bounding boxes");
 
-  // --- reported E_d and E_s are those of the outputs
+  // --- the atlas: no crossing border (unless allowed), UVs in the unit
+  // square (unless in world units), the reported coverage and crossings
   auto& mutable_run = const_cast<Cut_run<Mesh>&>(run);
-  const double energy = SMP_::distortion_energy(mesh, mutable_run.uvs());
+  const std::size_t crossings = SMP_::number_of_border_crossings(mesh, mutable_run.uvs());
+  CHECK_EQ(crossings, run.result.border_crossings);
+  if(run.injective) CHECK_EQ(crossings, std::size_t(0));
+  CHECK(run.result.uv_scale > 0. && std::isfinite(run.result.uv_scale));
+  if(run.world_units)
+    CHECK_EQ(run.result.uv_scale, 1.);
+  else
+  {
+    std::size_t outside = 0;
+    for(halfedge_descriptor h : halfedges(mesh))
+    {
+      const Point_2& p = run.uv(h);
+      if(!(p.x() >= 0. && p.x() <= 1. && p.y() >= 0. && p.y() <= 1.)) ++outside;
+    }
+    CHECK_MSG(outside == 0, outside << " UVs outside the unit square");
+    CHECK_REL(SMP_::uv_area(mesh, mutable_run.uvs()), run.result.uv_coverage, 1e-9);
+  }
+
+  // --- reported E_d and E_s are those of the outputs (E_d in 3D units)
+  const double energy = SMP_::distortion_energy(mesh, run.world_uvs());
   CHECK(std::isfinite(run.result.distortion) && run.result.distortion >= 4. - 1e-9);
   CHECK_REL(energy, run.result.distortion, 1e-9);
   double seam_length = 0.;

@@ -605,6 +605,90 @@ inline Soup double_torus_soup(int n = 8, double thickness = 0.1)
   return thickened_soup(disk_with_holes_soup(n, 2), thickness);
 }
 
+// ---------------------------------------------------------------------------
+// Shapes whose best flattening overlaps itself (global injectivity tests)
+
+/// Grid of (n_along + 1) × (n_across + 1) points f(s, t), s, t in [0, 1],
+/// split into triangles; with `wrap`, the last column is the first one
+/// (a closed band).
+inline Soup parametric_strip_soup(int n_along, int n_across, bool wrap,
+                                  const std::function<Soup::Point(double s, double t)>& f)
+{
+  Soup soup;
+  const int columns = wrap ? n_along : n_along + 1;
+  for(int i = 0; i < columns; ++i)
+    for(int j = 0; j <= n_across; ++j)
+    {
+      const Soup::Point p = f(double(i) / n_along, double(j) / n_across);
+      soup.add_point(p[0], p[1], p[2]);
+    }
+  auto v = [=](int i, int j) { return std::size_t((i % columns) * (n_across + 1) + j); };
+  for(int i = 0; i < n_along; ++i)
+    for(int j = 0; j < n_across; ++j)
+    {
+      soup.add_triangle(v(i, j), v(i + 1, j), v(i + 1, j + 1));
+      soup.add_triangle(v(i, j), v(i + 1, j + 1), v(i, j + 1));
+    }
+  return soup;
+}
+
+/// The ramp of a spiral staircase: a narrow helicoidal strip going `turns`
+/// times around the z axis between radii 1 and 1 + width, rising `pitch`
+/// per turn. Nearly developable; laid flat it is an arc of about 2π · turns:
+/// beyond one turn its ends overlap unless the map is kept injective.
+inline Soup spiral_ramp_soup(int n_along, int n_across, double turns = 1.5, double width = 0.3,
+                             double pitch = 0.2)
+{
+  return parametric_strip_soup(n_along, n_across, false, [=](double s, double t) {
+    const double angle = 2. * pi * turns * s, radius = 1. + width * t;
+    return Soup::Point{radius * std::cos(angle), radius * std::sin(angle), pitch * turns * s};
+  });
+}
+
+/// A thin annulus on a monkey saddle, radii 0.8 to 1, z = amplitude · r³ ·
+/// sin(3θ): its inner circle has a total geodesic curvature above 2π (the
+/// saddle inside has negative curvature), so once cut open it lays flat over
+/// more than a full turn and its ends overlap unless kept injective.
+inline Soup saddle_annulus_soup(int n_around, int n_across, double amplitude = 0.8)
+{
+  return parametric_strip_soup(n_around, n_across, true, [=](double s, double t) {
+    const double angle = 2. * pi * s, radius = 0.8 + 0.2 * t;
+    return Soup::Point{radius * std::cos(angle), radius * std::sin(angle),
+                       amplitude * radius * radius * radius * std::sin(3. * angle)};
+  });
+}
+
+/// A saddle-shaped disk (monkey saddle z = amplitude · r³ · sin(3θ), total
+/// angle above 2π around its center) slit along θ = 0 from the rim down to
+/// ring `slit_from`: laid flat, the two sides of the slit overlap.
+inline Soup slit_saddle_soup(int rings, int sectors, int slit_from, double amplitude = 0.8)
+{
+  Soup s;
+  auto point = [&](int i, double theta) {
+    const double r = double(i) / rings;
+    s.add_point(r * std::cos(theta), r * std::sin(theta), amplitude * r * r * r * std::sin(3. * theta));
+  };
+  point(0, 0.);
+  // ring i has sectors points, plus a copy of its first point if the slit cuts it
+  std::vector<std::size_t> first(rings + 1), copy(rings + 1);
+  for(int i = 1; i <= rings; ++i)
+  {
+    first[i] = s.points.size();
+    for(int k = 0; k < sectors; ++k) point(i, 2. * pi * k / sectors);
+    copy[i] = first[i];
+    if(i >= slit_from) { copy[i] = s.points.size(); point(i, 2. * pi); }
+  }
+  auto v = [&](int i, int k) { return k == sectors ? copy[i] : first[i] + std::size_t(k); };
+  for(int k = 0; k < sectors; ++k) s.add_triangle(0, v(1, k), v(1, k + 1));
+  for(int i = 1; i < rings; ++i)
+    for(int k = 0; k < sectors; ++k)
+    {
+      s.add_triangle(v(i, k), v(i + 1, k), v(i + 1, k + 1));
+      s.add_triangle(v(i, k), v(i + 1, k + 1), v(i, k + 1));
+    }
+  return s;
+}
+
 } // namespace cut_test
 
 #endif

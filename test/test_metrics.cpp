@@ -1,6 +1,7 @@
 // Public metrics (parameterization_metrics.h) on hand-computed cases:
 // face_distortion / distortion_energy (E_d), number_of_flipped_faces,
-// surface_area, seam_length (E_s), with vertex- and halfedge-keyed UV maps.
+// surface_area, seam_length (E_s), number_of_border_crossings, uv_area, with
+// vertex- and halfedge-keyed UV maps.
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
@@ -57,6 +58,49 @@ Soup square_fan_soup()
   s.add_point(0.5, 0.5, 0);
   for(std::size_t k = 0; k < 4; ++k) s.add_triangle(k, (k + 1) % 4, 4);
   return s;
+}
+
+/// Gives every corner of `mesh` the UV of its vertex in `vertex_uv`.
+template <typename Mesh, typename VertexUV, typename HalfedgeUV>
+void copy_to_corners(const Mesh& mesh, const VertexUV& vertex_uv, HalfedgeUV& corner_uv)
+{
+  for(auto f : faces(mesh))
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) put(corner_uv, h, get(vertex_uv, target(h, mesh)));
+}
+
+/// The strip grid_soup(4, 1) (point (i, j) is j * 5 + i) bent along the
+/// path (0,0) -> (4,0) -> (4,3) -> (2,3) -> (2,-2), width 1, turning left at
+/// each corner (mitered): its last leg crosses its first leg. No flipped
+/// face; the sides x = 1.5 and x = 2.5 of the last leg cross the sides
+/// y = -0.5 and y = 0.5 of the first: 4 border crossings. UV area: the
+/// trapezoids 4 + 3 + 2 + 5 = 14.
+const double strip_loop_uv[2][5][2] = {{{0, -0.5}, {4.5, -0.5}, {4.5, 3.5}, {1.5, 3.5}, {1.5, -2}},  // j = 0 (outer side)
+                                       {{0, 0.5}, {3.5, 0.5}, {3.5, 2.5}, {2.5, 2.5}, {2.5, -2}}}; // j = 1 (inner side)
+
+/// Brute force: pairs of the faces' UV edges, in different faces, that cross properly.
+template <typename Mesh, typename HalfedgeUV>
+std::size_t crossings_of_separate_faces(const Mesh& mesh, const HalfedgeUV& corner_uv)
+{
+  std::vector<std::array<SMP::internal::cut::Vector2, 2>> edges_uv;
+  std::vector<std::size_t> face_index;
+  std::size_t k = 0;
+  for(auto f : faces(mesh))
+  {
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      edges_uv.push_back({SMP::internal::cut::corner_uv(mesh, corner_uv, prev(h, mesh)),
+                          SMP::internal::cut::corner_uv(mesh, corner_uv, h)});
+      face_index.push_back(k);
+    }
+    ++k;
+  }
+  std::size_t n = 0;
+  for(std::size_t a = 0; a < edges_uv.size(); ++a)
+    for(std::size_t b = a + 1; b < edges_uv.size(); ++b)
+      if(face_index[a] != face_index[b] &&
+         SMP::internal::cut::segments_cross_properly(edges_uv[a][0], edges_uv[a][1], edges_uv[b][0], edges_uv[b][1]))
+        ++n;
+  return n;
 }
 
 } // namespace
@@ -307,6 +351,232 @@ CUT_TYPED_TEST(metrics_do_not_depend_on_scale, Mesh_types)
       CHECK_REL(es, reference_es, 1e-12);
     }
   }
+}
+
+CUT_TYPED_TEST(border_crossings_of_a_strip_looped_over_itself, Mesh_types)
+{
+  const Soup soup = grid_soup(4, 1, 4., 1.);
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  auto corner_uv = halfedge_uv_map(mesh);
+
+  // laid out flat (the identity): no crossing
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    put(uv, vertex_of[i], Point_2(soup.points[i][0], soup.points[i][1]));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  copy_to_corners(mesh, uv, corner_uv);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(0));
+  CHECK_REL(SMP::uv_area(mesh, uv), 4., 1e-14);
+
+  // looped over itself: 4 crossings of its sides, none of the inner edges
+  // (the diagonals and the rungs also cross the first leg) counted
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 5; ++i)
+      put(uv, vertex_of[std::size_t(j * 5 + i)], Point_2(strip_loop_uv[j][i][0], strip_loop_uv[j][i][1]));
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(4));
+  CHECK_REL(SMP::uv_area(mesh, uv), 14., 1e-14);
+  // the same map keyed by halfedges: equal corner UVs make no seam
+  copy_to_corners(mesh, uv, corner_uv);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(4));
+  CHECK_REL(SMP::uv_area(mesh, corner_uv), 14., 1e-14);
+
+  // the last leg shortened to end at y = 0 (inside the first leg): its
+  // sides cross only the inner side y = 0.5, and its end y = 0 crosses nothing
+  put(uv, vertex_of[4], Point_2(1.5, 0.));
+  put(uv, vertex_of[9], Point_2(2.5, 0.));
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(2));
+  // ending exactly on the outer side y = -0.5: touching is not crossing
+  put(uv, vertex_of[4], Point_2(1.5, -0.5));
+  put(uv, vertex_of[9], Point_2(2.5, -0.5));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(2));
+}
+
+CUT_TYPED_TEST(a_seam_is_a_uv_border, Mesh_types)
+{
+  // the strip [0,3] x [0,1] of 3 squares; the faces of the last square get
+  // their own UVs (halfedge-keyed map), so the edge x = 2 is a seam
+  const Soup soup = grid_soup(3, 1, 3., 1.);
+  TestType mesh;
+  build_mesh(soup, mesh);
+  auto corner_uv = halfedge_uv_map(mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  auto place = [&](double dx, double dy) {
+    for(auto f : faces(mesh))
+    {
+      double cx = 0.;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) cx += get(vpm, target(h, mesh)).x() / 3.;
+      const bool last = cx > 2.;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      {
+        const auto& p = get(vpm, target(h, mesh));
+        put(corner_uv, h, Point_2(p.x() + (last ? dx : 0.), p.y() + (last ? dy : 0.)));
+      }
+    }
+  };
+
+  // no shift: equal UVs on both sides, one chart, no crossing
+  place(0., 0.);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(0));
+  // the last square moved away: two charts, no crossing
+  place(10., 0.);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(0));
+  CHECK_REL(SMP::uv_area(mesh, corner_uv), 3., 1e-14);
+  // moved to [1.5,2.5] x [0.5,1.5]: its seam side x = 1.5 crosses the top
+  // y = 1 of the rest, and its bottom y = 0.5 crosses the rest's seam side
+  // x = 2; both crossings involve a seam side
+  place(-0.5, 0.5);
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, corner_uv), std::size_t(0));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(2));
+  CHECK_REL(SMP::uv_area(mesh, corner_uv), 3., 1e-14);
+  // moved up only ([2,3] x [0.5,1.5]): the seam sides overlap along x = 2
+  // and the bottom y = 0.5 ends on the seam side x = 2: no proper crossing
+  place(0., 0.5);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), std::size_t(0));
+}
+
+CUT_TYPED_TEST(border_crossings_of_overlapping_pieces, Mesh_types)
+{
+  // two components, one square each (grid_soup(1, 1): two triangles): laid
+  // as a '+' their sides cross 4 times; the diagonals are not borders
+  Soup soup = grid_soup(1, 1);
+  soup.append(grid_soup(1, 1));
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  auto lay = [&](double x0, double y0, double w0, double h0, double x1, double y1, double w1, double h1) {
+    for(std::size_t i = 0; i < 8; ++i)
+    {
+      const bool second = i >= 4;
+      const double x = soup.points[i][0], y = soup.points[i][1];
+      put(uv, vertex_of[i], second ? Point_2(x1 + w1 * x, y1 + h1 * y) : Point_2(x0 + w0 * x, y0 + h0 * y));
+    }
+  };
+  lay(0., 1., 3., 1., 1., 0., 1., 3.); // '+'
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(4));
+  CHECK_REL(SMP::uv_area(mesh, uv), 6., 1e-14);
+  lay(0., 1., 3., 1., 1., 0., 1., 1.5); // 'T' upside down: the vertical one ends inside
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(2));
+  lay(0., 0., 1., 1., 2., 0., 1., 1.); // side by side
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  lay(0., 0., 1., 1., 1., 0., 1., 1.); // sharing a side (different vertices, equal UVs)
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  lay(0., 1., 3., 1., 3., 0., 1., 3.); // T-junction: a corner on the other's side
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  lay(0., 0., 1., 1., 0., 0., 1., 1.); // one on top of the other: collinear overlaps only
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  CHECK_REL(SMP::uv_area(mesh, uv), 2., 1e-14);
+}
+
+CUT_TYPED_TEST(a_folded_face_crosses_the_border, Mesh_types)
+{
+  // T1 = (p0 p1 p2), T2 = (p1 p3 p2) sharing p1 p2; p3 folded over the
+  // shared edge to (-0.5, 0.3): T2 flips and its side p1 p3 crosses T1's
+  // side p2 p0 at (0, 0.2)
+  Soup soup;
+  soup.add_point(0, 0, 0);
+  soup.add_point(1, 0, 0);
+  soup.add_point(0, 1, 0);
+  soup.add_point(1, 1, 0);
+  soup.add_triangle(0, 1, 2);
+  soup.add_triangle(1, 3, 2);
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  for(std::size_t i = 0; i < 4; ++i) put(uv, vertex_of[i], Point_2(soup.points[i][0], soup.points[i][1]));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  CHECK_REL(SMP::uv_area(mesh, uv), 1., 1e-14);
+  put(uv, vertex_of[3], Point_2(-0.5, 0.3));
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(1));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(1));
+  // unsigned areas: 0.5 + |(-1.5, 0.3) x (-1, 1)| / 2 = 0.5 + 0.6
+  CHECK_REL(SMP::uv_area(mesh, uv), 1.1, 1e-14);
+  // a non-finite UV makes its segments cross nothing
+  put(uv, vertex_of[3], Point_2(std::numeric_limits<double>::quiet_NaN(), 0.3));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  CHECK(std::isnan(SMP::uv_area(mesh, uv)));
+}
+
+CUT_TYPED_TEST(border_crossings_match_brute_force, Mesh_types)
+{
+  // every face its own chart at a random place (halfedge-keyed): all face
+  // edges are borders; the count must match the quadratic one
+  const Soup soup = grid_soup(6, 5);
+  TestType mesh;
+  build_mesh(soup, mesh);
+  auto corner_uv = halfedge_uv_map(mesh);
+  for(std::uint64_t seed : {1u, 2u, 3u})
+  {
+    Scoped_context ctx("seed " + to_text(double(seed)));
+    Rng rng(seed);
+    for(auto f : faces(mesh))
+    {
+      const double cx = rng.uniform(0., 3.), cy = rng.uniform(0., 3.);
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+        put(corner_uv, h, Point_2(cx + rng.uniform(-0.4, 0.4), cy + rng.uniform(-0.4, 0.4)));
+    }
+    const std::size_t expected = crossings_of_separate_faces(mesh, corner_uv);
+    CHECK(expected > 0);
+    CHECK_EQ(SMP::number_of_border_crossings(mesh, corner_uv), expected);
+  }
+}
+
+CUT_TYPED_TEST(uv_area_of_known_layouts, Mesh_types)
+{
+  const Soup soup = square_fan_soup();
+  TestType mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  // identity, scaled, mirrored (unsigned areas), moved
+  const double cases[][4] = {{1., 1., 0., 1.}, {2., 2., 0., 4.}, {1., -1., 0., 1.}, {0.5, -0.25, 7., 0.125}};
+  for(const auto& c : cases)
+  {
+    Scoped_context ctx("sx=" + to_text(c[0]) + " sy=" + to_text(c[1]));
+    for(std::size_t i = 0; i < 5; ++i)
+      put(uv, vertex_of[i], Point_2(c[2] + c[0] * soup.points[i][0], c[1] * soup.points[i][1]));
+    CHECK_REL(SMP::uv_area(mesh, uv), c[3], 1e-14);
+    CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  }
+  // the center moved out of the square: the bottom face flips and the
+  // unsigned areas add up to more than the square's (bottom, left and right
+  // 0.25, top 0.75); the fold is inside, the border (the square's sides)
+  // stays simple: no crossing
+  put(uv, vertex_of[4], Point_2(0.5, -0.5));
+  for(std::size_t i = 0; i < 4; ++i) put(uv, vertex_of[i], Point_2(soup.points[i][0], soup.points[i][1]));
+  double expected = 0.;
+  for(std::size_t k = 0; k < 4; ++k)
+  {
+    const Point_2 a = get(uv, vertex_of[k]), b = get(uv, vertex_of[(k + 1) % 4]), c = get(uv, vertex_of[4]);
+    expected += 0.5 * std::abs((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+  }
+  CHECK_REL(SMP::uv_area(mesh, uv), expected, 1e-14);
+  CHECK_REL(expected, 1.5, 1e-14);
+  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(1));
+  CHECK_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+
+  // corner UVs: T1 = (p0 p1 p2) as is (area 1/2), T2 = (p1 p3 p2) scaled by 2 (3D area 3/2, UV area 6)
+  Soup two;
+  two.add_point(0, 0, 0);
+  two.add_point(1, 0, 0);
+  two.add_point(0, 1, 0);
+  two.add_point(3, 1, 0);
+  two.add_triangle(0, 1, 2);
+  two.add_triangle(1, 3, 2);
+  TestType mesh2;
+  const auto v2 = build_mesh(two, mesh2);
+  auto corner_uv = halfedge_uv_map(mesh2);
+  auto vpm = get(CGAL::vertex_point, mesh2);
+  const auto t1 = face_of(mesh2, v2[0], v2[1]);
+  for(auto f : faces(mesh2))
+    for(auto h : halfedges_around_face(halfedge(f, mesh2), mesh2))
+    {
+      const auto& p = get(vpm, target(h, mesh2));
+      put(corner_uv, h, f == t1 ? Point_2(p.x(), p.y()) : Point_2(2. * p.x() + 7., 2. * p.y()));
+    }
+  CHECK_REL(SMP::uv_area(mesh2, corner_uv), 6.5, 1e-14);
+  CHECK_EQ(SMP::number_of_border_crossings(mesh2, corner_uv), std::size_t(0));
 }
 
 CUT_TEST_MAIN()

@@ -1,7 +1,7 @@
 // check_all_meshes: runs uv_unwrap on every mesh file of some directories
 // (CGAL's data set, the shared benchmark meshes) and checks that each run
 // ends either with a result or with a documented error: never a crash, a
-// hang, a NaN or a flipped face.
+// hang, a NaN, a flipped face, an overlap or a UV outside the unit square.
 //
 //   check_all_meshes --uv-unwrap PATH [options] DIR_OR_FILE... [-- UV_UNWRAP_OPTIONS...]
 //
@@ -12,12 +12,16 @@
 //   2. uv_unwrap (fork + exec) with -o OBJ --stats JSON;
 //   3. verify (fork): re-reads the input through the same path and the OBJ:
 //      same vertices (positions bit for bit) and faces (count, order,
-//      corners), finite `vt`, positive signed UV area for every face;
-//   4. determinism: meshes up to --repeat-faces faces are unwrapped a second
+//      corners), finite `vt`, positive signed UV area for every face, every
+//      `vt` in [0,1]² (not with --world-units among the uv_unwrap options);
+//   4. overlaps: "border_crossings" of the statistics (recounted by
+//      uv_unwrap on its output) must be 0 (not with --allow-overlaps);
+//   5. determinism: meshes up to --repeat-faces faces are unwrapped a second
 //      time, and both OBJ files must be identical byte for byte.
 // Prints one table row per mesh and a summary; exits with 1 if any mesh
-// crashed, hung, produced a NaN or a flipped face, or otherwise broke the
-// contract (undocumented error, inconsistent output), 0 otherwise.
+// crashed, hung, produced a NaN, a flipped face (FLIP), crossing UV borders
+// (OVERLAP) or a UV outside [0,1] (RANGE), or otherwise broke the contract
+// (undocumented error, inconsistent output), 0 otherwise.
 #include "mesh_input.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
@@ -69,8 +73,12 @@ const char* const usage_text =
   "\n"
   "Runs uv_unwrap on every .off, .obj, .ply and .stl file (directories are\n"
   "searched recursively) and checks each result: a documented error or a\n"
-  "valid UV map (finite, flip-free, same vertices and faces as the input).\n"
-  "Exits with 1 on any crash, hang, NaN, flipped face or broken contract.\n"
+  "valid UV map (finite, flip-free, same vertices and faces as the input) that\n"
+  "is a texture atlas: no crossing UV borders (\"border_crossings\": 0 in the\n"
+  "statistics; not checked with --allow-overlaps after --) and every UV in\n"
+  "[0,1] (not checked with --world-units after --).\n"
+  "Exits with 1 on any crash, hang, NaN, flipped face, overlap, UV outside\n"
+  "[0,1] or broken contract.\n"
   "\n"
   "options:\n"
   "  --uv-unwrap PATH     the uv_unwrap executable (required)\n"
@@ -293,8 +301,8 @@ std::string probe(const std::string& file)
 }
 
 // Verify: the OBJ against the mesh the input path gives. "OK" or "FAIL kind: reason"
-// with kind NAN, FLIP or OUTPUT.
-std::string verify(const std::string& input, const std::string& obj_file)
+// with kind NAN, FLIP, RANGE (a vt outside [0,1]², checked if `unit_square`) or OUTPUT.
+std::string verify(const std::string& input, const std::string& obj_file, bool unit_square)
 {
   mesh_input::Mesh mesh;
   mesh_input::Input_report report;
@@ -355,6 +363,21 @@ std::string verify(const std::string& input, const std::string& obj_file)
   for(const auto& t : vt)
     if(!std::isfinite(t[0]) || !std::isfinite(t[1])) ++nan_vt;
   if(nan_vt > 0) return "FAIL NAN: " + std::to_string(nan_vt) + " non-finite vt";
+  if(unit_square)
+  {
+    // exact: the OBJ's decimal digits cannot round a value of [0,1] out of it
+    std::size_t outside = 0, first_outside = 0;
+    for(std::size_t t = 0; t < vt.size(); ++t)
+      if(!(vt[t][0] >= 0. && vt[t][0] <= 1. && vt[t][1] >= 0. && vt[t][1] <= 1.) && outside++ == 0)
+        first_outside = t;
+    if(outside > 0)
+    {
+      std::ostringstream why;
+      why << "FAIL RANGE: " << outside << " vt outside [0,1] (first: vt " << first_outside + 1 << " = "
+          << vt[first_outside][0] << " " << vt[first_outside][1] << ")";
+      return why.str();
+    }
+  }
 
   std::size_t k = 0, flipped = 0, first_flipped = 0;
   for(auto fd : faces(mesh))
@@ -471,12 +494,21 @@ int run(const Options& options)
                     json = (work / "out.json").string(), log = (work / "log.txt").string();
   const std::string exe = fs::absolute(options.uv_unwrap).string();
   if(access(exe.c_str(), X_OK) != 0) throw std::runtime_error("cannot execute " + exe);
+  // the atlas contracts, unless uv_unwrap is told to waive them
+  auto passes_option = [&](const char* option) {
+    return std::find(options.uv_unwrap_args.begin(), options.uv_unwrap_args.end(), option) !=
+           options.uv_unwrap_args.end();
+  };
+  const bool check_overlaps = !passes_option("--allow-overlaps");
+  const bool check_unit_square = !passes_option("--world-units");
 
   std::cout << "check_all_meshes: " << meshes.size() << " mesh files; time limit " << options.timeout
             << " s per run; "
             << (options.max_faces ? "skipping meshes above " + std::to_string(options.max_faces) + " faces"
                                   : std::string("no face limit"))
-            << "; determinism checked up to " << options.repeat_faces << " faces\n\n";
+            << "; determinism checked up to " << options.repeat_faces << " faces"
+            << "; overlaps " << (check_overlaps ? "checked" : "not checked (--allow-overlaps)")
+            << "; UVs in [0,1] " << (check_unit_square ? "checked" : "not checked (--world-units)") << "\n\n";
   Row header{"mesh", "faces", "status", "time", "E_d", "E_s", "charts", "warn"};
   print_row(header);
   std::cout << std::string(100, '-') << std::endl;
@@ -575,7 +607,7 @@ int run(const Options& options)
     if(status != "ok") { problem("FAIL", "exit status 0 with status '" + status + "'"); print_row(row); continue; }
 
     // 3. verify
-    const Child_result v = run_forked([&] { return verify(file, obj); }, options.timeout);
+    const Child_result v = run_forked([&] { return verify(file, obj, check_unit_square); }, options.timeout);
     if(v.kind != Child_result::EXITED || v.code != 0)
     {
       problem(v.kind == Child_result::TIMED_OUT ? "HANG" : "CRASH", "verifying: " + describe(v) + " " + v.output);
@@ -591,7 +623,25 @@ int run(const Options& options)
       continue;
     }
 
-    // 4. determinism
+    // 4. overlaps: uv_unwrap's recount on its output
+    if(check_overlaps)
+    {
+      const std::string crossings = json_value(stats, "border_crossings");
+      if(crossings.empty())
+      {
+        problem("OUTPUT", "no border_crossings in the statistics");
+        print_row(row);
+        continue;
+      }
+      if(crossings != "0")
+      {
+        problem("OVERLAP", crossings + " pairs of UV border segments cross (charts overlap)");
+        print_row(row);
+        continue;
+      }
+    }
+
+    // 5. determinism
     if(faces <= options.repeat_faces)
     {
       std::vector<std::string> again = args;

@@ -2,7 +2,8 @@
 // mesh (tools/mesh_input.h: validation, repair and triangulation, with
 // warnings), cuts it and computes a UV map, writes an OBJ with texture
 // coordinates and, on request, a JSON file of statistics and pictures
-// (tools/preview).
+// (tools/preview). By default the result is a texture atlas: charts free of
+// overlap, packed into the unit square with a padding in texels.
 #include "mesh_input.h"
 
 #include <CGAL/Surface_mesh.h>
@@ -63,6 +64,12 @@ struct Options
   double epsilon_end = 0.01;
   int iterations = 3;
   int passes = 1;
+  // atlas
+  bool allow_overlaps = false;   // global_injectivity(false)
+  bool world_units = false;
+  int texture_size = 1024;
+  double padding = 2.;           // texels
+  double box_aspect_ratio = 0.;  // width / height; 0: no bounding-box term
   bool quiet = false;
 };
 
@@ -83,6 +90,11 @@ const char* const usage_text =
   "  --epsilon-end X         epsilon is halved while above this value (default 0.01)\n"
   "  --iterations N          alternations per epsilon (default 3)\n"
   "  --passes N              optimize-and-cut passes (default 1)\n"
+  "  --allow-overlaps        let a chart overlap itself (no scaffold; charts still packed apart)\n"
+  "  --world-units           keep UVs in 3D units (charts still packed) instead of [0,1]\n"
+  "  --texture-size N        texture width and height in texels, unit of --padding (default 1024)\n"
+  "  --padding TEXELS        gap between charts and to the square's sides, >= 0 (default 2)\n"
+  "  --box W:H               pull each chart into a W:H rectangle (e.g. 2:1; default: off)\n"
   "  --svg FILE              write the UV layout, colored by distortion, as SVG\n"
   "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
   "  --up AXIS               up axis of the mesh for --png: x, y, z, -z, ... (default y)\n"
@@ -106,6 +118,28 @@ int parse_count(const std::string& option, const std::string& text)
   if(value != std::floor(value) || value < 1. || value > 1e6)
     throw Failure("invalid value '" + text + "' for " + option + " (expected a positive integer)");
   return int(value);
+}
+
+// "W:H", both positive numbers: the aspect ratio W / H.
+double parse_aspect_ratio(const std::string& option, const std::string& text)
+{
+  const std::size_t colon = text.find(':');
+  const std::string expected = " (expected W:H, two positive numbers, e.g. 2:1)";
+  if(colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
+    throw Failure("invalid value '" + text + "' for " + option + expected);
+  double w = 0., h = 0.;
+  try
+  {
+    w = parse_number(option, text.substr(0, colon));
+    h = parse_number(option, text.substr(colon + 1));
+  }
+  catch(const Failure&)
+  {
+    throw Failure("invalid value '" + text + "' for " + option + expected);
+  }
+  if(!(w > 0.) || !(h > 0.) || !std::isfinite(w / h) || !(w / h > 0.))
+    throw Failure("invalid value '" + text + "' for " + option + expected);
+  return w / h;
 }
 
 // Returns false when the program should stop successfully (--help).
@@ -138,6 +172,17 @@ bool parse_arguments(int argc, char** argv, Options& options)
     else if(arg == "--epsilon-end") options.epsilon_end = parse_number(arg, next_value());
     else if(arg == "--iterations") options.iterations = parse_count(arg, next_value());
     else if(arg == "--passes") options.passes = parse_count(arg, next_value());
+    else if(arg == "--allow-overlaps") options.allow_overlaps = true;
+    else if(arg == "--world-units") options.world_units = true;
+    else if(arg == "--texture-size") options.texture_size = parse_count(arg, next_value());
+    else if(arg == "--padding")
+    {
+      const std::string text = next_value();
+      options.padding = parse_number(arg, text);
+      if(!(options.padding >= 0.))
+        throw Failure("invalid value '" + text + "' for --padding (expected a number >= 0, in texels)");
+    }
+    else if(arg == "--box") options.box_aspect_ratio = parse_aspect_ratio(arg, next_value());
     else if(arg == "--svg") options.svg = next_value();
     else if(arg == "--png") options.png = next_value();
     else if(arg == "--up")
@@ -278,6 +323,8 @@ struct Run_summary
   std::string error;                  // one-line message when status is not "ok"
   std::vector<std::string> warnings;  // input repairs and remarks
   std::size_t vertices = 0, faces = 0, flipped_faces = 0;
+  std::size_t border_crossings = 0;   // recounted on the output
+  bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
   SMP::Cut_and_parameterize_result result;
   double time_seconds = 0.;
 };
@@ -302,6 +349,10 @@ void write_stats(const std::string& filename, const Run_summary& s)
       << "  \"distortion\": " << json_number(s.result.distortion) << ",\n"
       << "  \"initial_distortion\": " << json_number(s.result.initial_distortion) << ",\n"
       << "  \"flipped_faces\": " << s.flipped_faces << ",\n"
+      << "  \"border_crossings\": " << s.border_crossings << ",\n"
+      << "  \"uv_coverage\": " << json_number(s.result.uv_coverage) << ",\n"
+      << "  \"uv_scale\": " << json_number(s.result.uv_scale) << ",\n"
+      << "  \"uv_in_unit_square\": " << (s.uv_in_unit_square ? "true" : "false") << ",\n"
       << "  \"time_seconds\": " << json_number(s.time_seconds) << ",\n"
       << "  \"newton_iterations\": " << s.result.newton_iterations << "\n"
       << "}\n";
@@ -351,6 +402,8 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
     caption.seconds = summary.time_seconds;
     caption.faces = summary.faces;
     caption.charts = summary.result.number_of_charts;
+    caption.coverage = summary.result.uv_coverage;
+    caption.border_crossings = static_cast<long long>(summary.border_crossings);
     caption.name = name;
     if(!write_uv_svg(options.svg, preview, caption))
       throw Failure("cannot write '" + options.svg + "'", "ERROR_CANNOT_WRITE");
@@ -418,8 +471,13 @@ void run(const char* argv0, Options& options, Run_summary& summary)
                   P::epsilon_end(options.epsilon_end,
                   P::iterations_per_epsilon(options.iterations,
                   P::number_of_passes(options.passes,
+                  P::global_injectivity(!options.allow_overlaps,
+                  P::world_units(options.world_units,
+                  P::texture_size(options.texture_size,
+                  P::padding(options.padding,
+                  P::bounding_box_aspect_ratio(options.box_aspect_ratio,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
@@ -428,6 +486,14 @@ void run(const char* argv0, Options& options, Run_summary& summary)
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
                   SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
+  summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
+  summary.uv_in_unit_square = true;
+  for(face_descriptor f : faces(mesh))
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      const Point_2& uv = uvmap[h];
+      if(!(uv.x() >= 0. && uv.x() <= 1. && uv.y() >= 0. && uv.y() <= 1.)) summary.uv_in_unit_square = false;
+    }
 
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the
@@ -443,6 +509,8 @@ void run(const char* argv0, Options& options, Run_summary& summary)
               << ", seam length E_s " << r.seam_length << "\n"
               << "  distortion E_d " << r.distortion << " (initial " << r.initial_distortion
               << "), flipped faces " << summary.flipped_faces << "\n"
+              << "  UV coverage " << 100. * r.uv_coverage << " %, border crossings " << summary.border_crossings
+              << ", UVs " << (summary.uv_in_unit_square ? "in" : "not in") << " the unit square\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
               << "  wrote " << options.output;
     for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field})

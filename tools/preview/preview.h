@@ -40,11 +40,15 @@ struct Preview_caption
   std::size_t faces = 0;
   std::size_t charts = 0;
   std::string name;
+  double coverage = -1;            // UV area / texture square area, in [0,1]; negative: not shown
+  long long border_crossings = -1; // crossing UV border segments (overlaps); negative: not shown
 };
 
 // UV layout fitted to the page: faces filled by distortion (viridis-like ramp
 // on a log scale, with a legend), chart outlines, seams on top, a caption.
 // Flipped UV triangles (non-positive signed area) are filled in magenta.
+// A layout inside the unit square (a texture atlas) is shown in the whole
+// square, whose outline is drawn dashed.
 bool write_uv_svg(const std::string& path, const Preview_mesh& mesh,
                   const Preview_caption& caption);
 

@@ -118,14 +118,21 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
 {
   if(!valid_mesh(mesh, true))
     return false;
-  const Box2 box = uv_bounds(mesh);
-  const double du = box.hi[0] - box.lo[0], dv = box.hi[1] - box.lo[1];
+  Box2 box = uv_bounds(mesh);
+  double du = box.hi[0] - box.lo[0], dv = box.hi[1] - box.lo[1];
   // Also rejects extents that overflow or scale to non-finite page units.
   if(!(std::max(du, dv) > 0) || !std::isfinite(du) || !std::isfinite(dv) || !std::isfinite(740 / std::max(du, dv)))
     return false;
+  // A texture atlas: the page shows the whole unit square, framed.
+  const bool in_unit_square = box.lo[0] >= 0 && box.lo[1] >= 0 && box.hi[0] <= 1 && box.hi[1] <= 1;
+  if(in_unit_square)
+  {
+    box = Box2{{0, 0}, {1, 1}};
+    du = dv = 1;
+  }
 
   // Page geometry (SVG user units ~ pixels).
-  const double page_w = 1000, margin = 20, top_y = 80, area = 740;
+  const double page_w = 1000, margin = 20, top_y = 92, area = 740;
   const double s = area / std::max(du, dv);
   const double layout_h = dv * s;
   const double legend_x = margin + area + 30;
@@ -188,10 +195,38 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
   for(std::size_t i = 0; i < items.size(); ++i)
     o += (i ? "<tspan dx=\"28\">" : "<tspan>") + items[i] + "</tspan>";
   o += "</text>\n";
+  // The atlas' figures; what breaks an atlas (overlaps, flips) in magenta.
+  std::vector<std::string> atlas;
+  const std::string alarm = " fill=\"" + hex(flipped_rgb) + "\" font-weight=\"bold\"";
+  if(cap.coverage >= 0)
+    atlas.push_back(">coverage: " + fmt("%.1f", 100 * cap.coverage) + " %");
+  if(cap.border_crossings >= 0)
+    atlas.push_back((cap.border_crossings > 0 ? alarm : std::string()) +
+                    ">border crossings: " + std::to_string(cap.border_crossings));
   if(n_flipped > 0)
-    o += "<text x=\"20\" y=\"76\" font-size=\"14\" fill=\"" + hex(flipped_rgb) + "\">flipped faces: " +
-         std::to_string(n_flipped) + "</text>\n";
+    atlas.push_back(alarm + ">flipped faces: " + std::to_string(n_flipped));
+  if(!atlas.empty())
+  {
+    o += "<text x=\"20\" y=\"78\" font-size=\"14\">";
+    for(std::size_t i = 0; i < atlas.size(); ++i)
+      o += (i ? "<tspan dx=\"28\"" : "<tspan") + atlas[i] + "</tspan>";
+    o += "</text>\n";
+  }
   o += "</g>\n";
+
+  // The texture's frame, under the faces.
+  if(in_unit_square)
+  {
+    o += "<rect id=\"unit-square\" x=\"";
+    put_num(o, X(0));
+    o += "\" y=\"";
+    put_num(o, Y(1));
+    o += "\" width=\"";
+    put_num(o, s);
+    o += "\" height=\"";
+    put_num(o, s);
+    o += "\" fill=\"none\" stroke=\"#808080\" stroke-width=\"1\" stroke-dasharray=\"6 4\"/>\n";
+  }
 
   // Faces. crispEdges: antialiased edges of abutting polygons would let the
   // white background bleed through as hairlines.
@@ -318,6 +353,13 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
   };
   swatch_line(seam_rgb, 2.5, "seam");
   swatch_line({0, 0, 0}, 1, "chart boundary");
+  if(in_unit_square)
+  {
+    o += "<path d=\"M" + fmt("%.0f", legend_x) + ' ' + fmt("%.1f", y) +
+         "h26\" stroke=\"#808080\" stroke-width=\"1\" stroke-dasharray=\"6 4\"/>\n";
+    text(legend_x + 34, y + 4.5, "unit square (texture)");
+    y += 22;
+  }
   if(n_flipped > 0)
     swatch_box(flipped_rgb, "flipped face");
   if(!has_d)

@@ -38,6 +38,12 @@ struct Cut_and_parameterize_result
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)
+  /// pairs of UV border segments that cross properly (0: the atlas has no overlap)
+  std::size_t border_crossings = 0;
+  /// total UV area / area of the packing square (the unit square unless `world_units`)
+  double uv_coverage = 0.;
+  /// UV length per unit of 3D length (the common scale of all charts; 1 with `world_units`)
+  double uv_scale = 1.;
   /// `true` if `error` is `OK`
   bool ok() const { return error == OK; }
 };
@@ -68,6 +74,12 @@ Joint_settings joint_settings(const NamedParameters& np)
                                                    s.minimum_relative_cut_length);
   s.max_newton_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                              s.max_newton_iterations);
+  s.bounding_box_aspect_ratio = choose_parameter(get_parameter(np, internal_np::bounding_box_aspect_ratio),
+                                                 s.bounding_box_aspect_ratio);
+  s.global_injectivity = choose_parameter(get_parameter(np, internal_np::global_injectivity), s.global_injectivity);
+  s.packing.texture_size = choose_parameter(get_parameter(np, internal_np::texture_size), s.packing.texture_size);
+  s.packing.padding = choose_parameter(get_parameter(np, internal_np::padding), s.packing.padding);
+  s.packing.world_units = choose_parameter(get_parameter(np, internal_np::world_units), s.packing.world_units);
   const std::function<bool(const Cut_and_parameterize_progress&)> callback =
     choose_parameter(get_parameter(np, internal_np::progress_callback),
                      std::function<bool(const Cut_and_parameterize_progress&)>());
@@ -131,7 +143,10 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
   result.newton_iterations = state.newton_iterations;
   result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
-  result.distortion = mean_distortion(state.chart, state.x);
+  result.distortion = state.distortion;
+  result.uv_coverage = state.packing.coverage;
+  result.uv_scale = state.packing.scale;
+  result.border_crossings = count_border_crossings(border_segments(state.chart), state.x);
 }
 
 } // namespace cut

@@ -59,6 +59,18 @@ CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut
 /// true: refuse degenerate faces with ERROR_DEGENERATE_FACE instead of clamping them (default false).
 CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
 
+/// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a scaffold (bool, default true).
+CGAL_SMP_CUT_NAMED_PARAMETER(global_injectivity_t, global_injectivity)
+/// Atlas: width and height of the texture in texels, sets the padding's scale (int, default 1024).
+CGAL_SMP_CUT_NAMED_PARAMETER(texture_size_t, texture_size)
+/// Atlas: gap between charts and to the square's sides, in texels (double, default 2).
+CGAL_SMP_CUT_NAMED_PARAMETER(padding_t, padding)
+/// Atlas: true keeps the 3D scale (UV in world units, charts still packed without overlap) instead of
+/// scaling the atlas into the unit square (bool, default false).
+CGAL_SMP_CUT_NAMED_PARAMETER(world_units_t, world_units)
+/// Atlas: width / height of a rectangle that the final solve pulls each chart into (double; default 0: off).
+CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_aspect_ratio_t, bounding_box_aspect_ratio)
+
 #undef CGAL_SMP_CUT_NAMED_PARAMETER
 
 } // namespace Surface_mesh_parameterization

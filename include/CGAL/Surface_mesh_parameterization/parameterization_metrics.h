@@ -2,18 +2,23 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -154,6 +159,100 @@ std::size_t number_of_flipped_faces(const TriangleMesh& mesh, const UVMap& uvmap
     if(!(signed_area2 > 0.)) ++flipped;
   }
   return flipped;
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Number of pairs of UV border segments that cross properly: 0 for an atlas
+/// without overlap (given no flipped face), positive where charts overlap
+/// each other or themselves.
+///
+/// A UV border segment is the UV image of a face edge whose other side is
+/// the mesh border or a face whose corner UVs along that edge differ from
+/// this face's (a seam). Corners of one vertex with exactly equal UVs are
+/// the same UV point; two segments cross properly when they meet at a single
+/// point interior to both. Segments that share a UV point, touch, or overlap
+/// along a line are not counted. The predicates are exact (on the UVs
+/// converted to `double`); a UV that is not finite makes its segments cross
+/// nothing. Near-linear time (a uniform grid over the segments).
+///
+/// `uvmap` as in `face_distortion()` (a vertex-keyed map has no seams: its
+/// border segments are the mesh's border edges).
+/// \pre `mesh` is a triangle mesh
+/// \post the result is 0 if `mesh` has no face
+template <typename TriangleMesh, typename UVMap>
+std::size_t number_of_border_crossings(const TriangleMesh& mesh, const UVMap& uvmap)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+
+  // Number the distinct UV points of each vertex: its corners with exactly
+  // equal UVs share an index. The points of one vertex form a linked list
+  // (first_point of the vertex, then next_point).
+  auto first_point = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+  auto corner_point = get(CGAL::dynamic_halfedge_property_t<int>(), mesh);
+  for(vertex_descriptor v : vertices(mesh)) put(first_point, v, -1);
+  std::vector<internal::cut::Vector2> points;
+  std::vector<int> next_point;
+  for(auto f : faces(mesh))
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      const internal::cut::Vector2 uv = internal::cut::corner_uv(mesh, uvmap, h);
+      const vertex_descriptor v = target(h, mesh);
+      int i = get(first_point, v);
+      while(i >= 0 && !(points[std::size_t(i)] == uv)) i = next_point[std::size_t(i)];
+      if(i < 0)
+      {
+        i = int(points.size());
+        points.push_back(uv);
+        next_point.push_back(get(first_point, v));
+        put(first_point, v, i);
+      }
+      put(corner_point, h, i);
+    }
+
+  // Border segments, oriented like their face: an edge is inner (no
+  // segment) when the face on its other side has the same two UV points.
+  std::vector<std::array<int, 2>> segments;
+  for(auto f : faces(mesh))
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      const int a = get(corner_point, prev(h, mesh)), b = get(corner_point, h); // source(h), target(h)
+      const halfedge_descriptor o = opposite(h, mesh);
+      if(!is_border(o, mesh) && get(corner_point, o) == a && get(corner_point, prev(o, mesh)) == b) continue;
+      segments.push_back({a, b});
+    }
+
+  internal::cut::UV_vector x(2 * points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    x[2 * i] = points[i].x();
+    x[2 * i + 1] = points[i].y();
+  }
+  return internal::cut::count_border_crossings(segments, x);
+}
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Total UV area: the sum of the unsigned areas of the faces' UV triangles
+/// (overlapping and flipped triangles count in full). For an atlas inside
+/// the unit square this is its coverage, the fraction of the texture used.
+/// `uvmap` as in `face_distortion()`.
+/// \pre `mesh` is a triangle mesh
+/// \post the result is >= 0, or NaN if a UV is not finite
+template <typename TriangleMesh, typename UVMap>
+double uv_area(const TriangleMesh& mesh, const UVMap& uvmap)
+{
+  double area = 0.;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const auto u0 = internal::cut::corner_uv(mesh, uvmap, h);
+    const auto u1 = internal::cut::corner_uv(mesh, uvmap, next(h, mesh));
+    const auto u2 = internal::cut::corner_uv(mesh, uvmap, next(next(h, mesh), mesh));
+    area += 0.5 * std::abs((u1 - u0).x() * (u2 - u0).y() - (u1 - u0).y() * (u2 - u0).x());
+  }
+  return area;
 }
 
 /// \ingroup PkgCutParameterizationRef

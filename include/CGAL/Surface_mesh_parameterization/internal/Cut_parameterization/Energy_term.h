@@ -17,7 +17,16 @@ namespace cut {
 class Energy_term
 {
 public:
+  /// What update() changed.
+  enum class Update { NONE, VALUES, ELEMENTS };
+
   virtual ~Energy_term() = default;
+
+  /// Called at the current x before each Newton iteration. A term that
+  /// rebuilds itself there (a scaffold) returns VALUES if its energy changed
+  /// and ELEMENTS if its Hessian blocks changed too (declare_elements() is
+  /// then called again).
+  virtual Update update(const UV_vector&) { return Update::NONE; }
 
   /// Declares the Hessian blocks the term writes (called once per sparsity pattern).
   virtual void declare_elements(Hessian_assembler& hessian) = 0;

@@ -23,6 +23,13 @@ class Hessian_assembler
   int dimension_ = 0;
 
 public:
+  /// Forgets every element (the pattern is built again by finalize()).
+  void clear()
+  {
+    element_dofs_.clear();
+    element_slots_.clear();
+  }
+
   /// Declares an element coupling the given degrees of freedom; returns its id.
   int add_element(const std::vector<int>& dofs)
   {

@@ -44,15 +44,36 @@ class Projected_newton_solver
   std::vector<Energy_term*> terms_;
   Hessian_assembler hessian_;
   Sparse_cholesky cholesky_;
+  int dimension_;
+
+  void build_pattern()
+  {
+    hessian_.clear();
+    for(Energy_term* term : terms_) term->declare_elements(hessian_);
+    hessian_.finalize(dimension_);
+    cholesky_.analyze(hessian_.matrix());
+  }
+
+  /// Lets every term update itself at x; true if an energy value changed.
+  bool update_terms(const UV_vector& x)
+  {
+    bool values = false, elements = false;
+    for(Energy_term* term : terms_)
+    {
+      const Energy_term::Update u = term->update(x);
+      values = values || u != Energy_term::Update::NONE;
+      elements = elements || u == Energy_term::Update::ELEMENTS;
+    }
+    if(elements) build_pattern();
+    return values;
+  }
 
 public:
   /// Registers the terms and builds the pattern for `dimension` unknowns.
   Projected_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
-    : terms_(terms)
+    : terms_(terms), dimension_(dimension)
   {
-    for(Energy_term* term : terms_) term->declare_elements(hessian_);
-    hessian_.finalize(dimension);
-    cholesky_.analyze(hessian_.matrix());
+    build_pattern();
   }
 
   double energy(const UV_vector& x) const
@@ -66,6 +87,7 @@ public:
   Newton_report minimize(UV_vector& x, const Newton_settings& settings)
   {
     Newton_report report;
+    update_terms(x);
     report.initial_energy = report.energy = energy(x);
     if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
 
@@ -73,6 +95,7 @@ public:
     report.status = Newton_status::MAX_ITERATIONS;
     for(; report.iterations < settings.max_iterations; ++report.iterations)
     {
+      if(report.iterations > 0 && update_terms(x)) report.energy = energy(x);
       if(!newton_direction(x, gradient, direction))
       {
         report.status = Newton_status::LINEAR_SOLVE_FAILED;

@@ -45,13 +45,19 @@ struct Joint_settings
   // within 0.001 of tighter settings (better on bimba) with 25-35% fewer iterations.
   double alternation_tolerance = 1e-5; // u-steps inside the alternation
   double final_tolerance = 1e-7;       // final solve on the cut mesh
+  // Atlas: no chart overlaps itself (final_solve()), then packing into the unit square.
+  bool global_injectivity = true;
+  double bounding_box_aspect_ratio = 0.; // > 0: the final solve pulls each chart into such a rectangle
+  Packing_settings packing;
   std::function<bool(const Joint_progress&)> progress; // false: cancel
 
   bool valid() const
   {
     return lambda > 0. && epsilon_start > 0. && epsilon_end > 0. && epsilon_end <= epsilon_start
         && iterations_per_epsilon >= 1 && gamma > 0. && passes >= 0 && max_newton_iterations >= 1
-        && minimum_relative_cut_length >= 0. && minimum_relative_cut_length <= 1.;
+        && minimum_relative_cut_length >= 0. && minimum_relative_cut_length <= 1.
+        && bounding_box_aspect_ratio >= 0. && std::isfinite(bounding_box_aspect_ratio)
+        && packing.texture_size >= 1 && packing.padding >= 0. && std::isfinite(packing.padding);
   }
 
   int alternations_per_pass() const
@@ -73,6 +79,8 @@ struct Joint_state
   std::size_t newton_iterations = 0;
   std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
+  double distortion = 0.;           // E_d of the final map, before packing scales it
+  Packing_result packing;
 };
 
 /// Cuts the edges of `paths`, then joins any closed slit (a path that does
@@ -135,6 +143,33 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   return OK;
 }
 
+/// The final solve on the cut mesh (weights 1), from the map of the
+/// alternation. With global injectivity, a chart whose border then crosses
+/// itself is solved again from a Tutte embedding of the cut mesh (whose
+/// border is convex) with the scaffold, which keeps it free of crossings.
+/// (The scaffold cannot start from the alternation's map: its new cuts are
+/// slits of zero width, whose two sides cross at the first step.)
+inline Error_code final_solve(const Joint_settings& settings, Joint_state& state)
+{
+  const std::vector<double> ones(state.chart.number_of_faces(), 1.);
+  for(const bool injective : {false, true})
+  {
+    if(injective)
+    {
+      if(!settings.global_injectivity || !Scaffold_term(state.chart).has_crossing(state.x)) return OK;
+      const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
+      if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
+      if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
+    }
+    Distortion_minimizer minimizer(state.chart, ones, injective, settings.bounding_box_aspect_ratio);
+    const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
+    state.newton_iterations += report.iterations;
+    if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+  return OK;
+}
+
 /// The whole method from `state.is_cut` (seams given by the user), first
 /// completed into an initial cut that leaves every component a disk. Fills
 /// the rest of `state`.
@@ -167,15 +202,14 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
       return ERROR_CANCELED;
   }
 
-  Distortion_minimizer minimizer(state.chart, std::vector<double>(surface.number_of_faces(), 1.));
-  const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
-  state.newton_iterations += report.iterations;
-  if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  pack_charts(state.chart, state.x);
+  const Error_code final_status = final_solve(settings, state);
+  if(final_status != OK) return final_status;
+  state.distortion = mean_distortion(state.chart, state.x);
+  state.packing = pack_charts(state.chart, state.x, settings.packing);
   // never hand out a silently wrong map (checked in every build type)
   if(!state.x.allFinite() || number_of_flipped_faces(state.chart, state.x) > 0) return ERROR_NO_1_TO_1_MAPPING;
   if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),
-                                              settings.epsilon_end, mean_distortion(state.chart, state.x)}))
+                                              settings.epsilon_end, state.distortion}))
     return ERROR_CANCELED;
   return OK;
 }

@@ -3,8 +3,10 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 #define CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scaffold_term.h>
 
 #include <memory>
 
@@ -15,16 +17,33 @@ namespace cut {
 
 /// A distortion solver bound to one chart mesh connectivity: the symbolic
 /// factorization is reused by every call to minimize(); weights may change.
+/// With `injective`, a scaffold keeps every chart free of self-overlap: x
+/// must then have no crossing border when minimize() is called. With a
+/// positive `box_aspect_ratio`, a bounding-box term pulls each chart into a
+/// rectangle of that width / height.
 class Distortion_minimizer
 {
   std::vector<double> weights_;
   Distortion_term term_;
+  std::unique_ptr<Scaffold_term> scaffold_;
+  std::unique_ptr<Bounding_box_term> box_;
   Projected_newton_solver solver_;
 
+  std::vector<Energy_term*> terms()
+  {
+    std::vector<Energy_term*> t{&term_};
+    if(scaffold_) t.push_back(scaffold_.get());
+    if(box_) t.push_back(box_.get());
+    return t;
+  }
+
 public:
-  Distortion_minimizer(const Chart_mesh& mesh, std::vector<double> weights)
+  Distortion_minimizer(const Chart_mesh& mesh, std::vector<double> weights, bool injective = false,
+                       double box_aspect_ratio = 0.)
     : weights_(std::move(weights)), term_(mesh, weights_),
-      solver_({&term_}, 2 * mesh.number_of_vertices)
+      scaffold_(injective ? std::make_unique<Scaffold_term>(mesh) : nullptr),
+      box_(box_aspect_ratio > 0. ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio) : nullptr),
+      solver_(terms(), 2 * mesh.number_of_vertices)
   {}
 
   std::vector<double>& weights() { return weights_; }

@@ -1,0 +1,242 @@
+// The atlas is usable as a texture: global injectivity (no crossing UV
+// borders, the scaffold of Scaffold_term.h), packing into the unit square,
+// the bounding-box term.
+//
+// Shapes built to overlap when laid flat (a spiral ramp, a thin annulus on a
+// saddle, cut open, a saddle disk with a deep slit) are first unwrapped with
+// global_injectivity(false), which must overlap (so the test can fail), then
+// with the defaults, which must not (check_cut_result() recounts crossings
+// from the outputs and checks the unit square and the coverage). The energy
+// terms' gradients are checked against finite differences.
+#include "cut_result_checks.h"
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scaffold_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+
+#include <random>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace P = SMP::parameters;
+namespace ic = SMP::internal::cut;
+using namespace cut_test;
+
+namespace {
+
+std::vector<std::pair<std::string, Soup>> overlapping_shapes()
+{
+  return {{"spiral ramp", spiral_ramp_soup(72, 4)},
+          {"thin saddle annulus cut once", saddle_annulus_soup(120, 4)},
+          {"saddle with a deep slit", slit_saddle_soup(10, 36, 2)}};
+}
+
+/// Unwraps `soup` without, then with global injectivity; returns the E_d of both.
+template <typename Mesh>
+std::pair<double, double> unwrap_both_ways(const Soup& soup)
+{
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  Cut_run<Mesh> free_run(mesh);
+  free_run.run(P::global_injectivity(false));
+  check_cut_result(mesh, free_run);
+  // the shape does overlap when nothing prevents it
+  REQUIRE_MSG(free_run.result.border_crossings > 0, "the test shape does not overlap without the scaffold");
+
+  Cut_run<Mesh> run(mesh);
+  run.run();
+  check_cut_result(mesh, run); // no crossing, UVs in [0,1], coverage = UV area
+  CHECK_EQ(run.result.border_crossings, std::size_t(0));
+  CHECK(run.result.uv_coverage > 0.1);
+  return {free_run.result.distortion, run.result.distortion};
+}
+
+/// Chart mesh of a generated disk and a random admissible map near its Tutte embedding.
+struct Disk_chart
+{
+  ic::Indexed_surface<Surface_mesh> surface;
+  ic::Chart_mesh mesh;
+  std::vector<int> corner_uv;
+  ic::UV_vector x;
+};
+
+void make_disk_chart(const Soup& soup, Disk_chart& chart)
+{
+  Surface_mesh mesh;
+  build_mesh(soup, mesh);
+  REQUIRE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
+  ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh, chart.corner_uv);
+  REQUIRE(ic::disk_charts_embedding(chart.mesh, chart.x) == ic::Embedding_status::OK);
+}
+
+/// Central differences of term.value along random directions against the gradient.
+void check_gradient(ic::Energy_term& term, const ic::UV_vector& x, std::uint64_t seed)
+{
+  ic::Hessian_assembler hessian;
+  term.declare_elements(hessian);
+  hessian.finalize(int(x.size()));
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+  term.add_gradient_and_hessian(x, gradient, hessian);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  for(int trial = 0; trial < 5; ++trial)
+  {
+    Eigen::VectorXd d(x.size());
+    for(Eigen::Index i = 0; i < d.size(); ++i) d[i] = normal(rng);
+    const double h = 1e-5 * (std::min)(1., 0.5 * term.max_step(x, d));
+    const double numeric = (term.value(x + h * d) - term.value(x - h * d)) / (2. * h);
+    const double analytic = gradient.dot(d);
+    CHECK_MSG(std::abs(numeric - analytic) <= 1e-4 * std::abs(analytic) + 1e-12,
+              "directional derivative " << analytic << " vs finite differences " << numeric);
+  }
+}
+
+} // namespace
+
+CUT_TYPED_TEST(overlapping_shapes_come_out_injective, Mesh_types)
+{
+  for(const auto& shape : overlapping_shapes())
+  {
+    Scoped_context ctx(shape.first);
+    const auto distortion = unwrap_both_ways<TestType>(shape.second);
+    CHECK(std::isfinite(distortion.second) && distortion.second >= 4.);
+  }
+}
+
+CUT_TEST(world_units_keep_the_scale_and_stay_injective)
+{
+  Surface_mesh mesh;
+  build_mesh(spiral_ramp_soup(72, 4), mesh);
+  Cut_run<Surface_mesh> run(mesh);
+  run.run(P::world_units(true));
+  check_cut_result(mesh, run);
+  CHECK_EQ(run.result.uv_scale, 1.);
+  // the ramp is about 2π · 1.5 long: in world units its UVs span more than 1
+  double extent = 0.;
+  for(auto h : halfedges(mesh)) extent = (std::max)({extent, std::abs(run.uv(h).x()), std::abs(run.uv(h).y())});
+  CHECK(extent > 1.);
+}
+
+CUT_TEST(no_change_where_nothing_overlaps)
+{
+  // a disk whose map does not overlap: the same UVs with or without the scaffold
+  Surface_mesh mesh;
+  build_mesh(wavy_disk_soup(10, 30, 3), mesh);
+  Cut_run<Surface_mesh> free_run(mesh), run(mesh);
+  free_run.run(P::global_injectivity(false));
+  run.run();
+  check_cut_result(mesh, free_run);
+  check_cut_result(mesh, run);
+  REQUIRE_EQ(free_run.result.border_crossings, std::size_t(0));
+  CHECK_EQ(run.result.distortion, free_run.result.distortion);
+  CHECK_EQ(run.result.newton_iterations, free_run.result.newton_iterations);
+  std::size_t different = 0;
+  for(auto h : halfedges(mesh)) different += run.uv(h) != free_run.uv(h);
+  CHECK_EQ(different, std::size_t(0));
+}
+
+CUT_TEST(padding_and_texture_size_are_honoured)
+{
+  // two disjoint disks: their UVs are at least padding / texture_size apart
+  Surface_mesh mesh;
+  build_mesh(two_components_soup(6), mesh);
+  for(const double padding : {0., 4., 32.})
+  {
+    Scoped_context ctx("padding " + std::to_string(padding));
+    Cut_run<Surface_mesh> run(mesh);
+    run.run(P::padding(padding, P::texture_size(256)));
+    const auto report = check_cut_result(mesh, run);
+    REQUIRE_EQ(report.box.size(), std::size_t(2));
+    const auto& a = report.box[0];
+    const auto& b = report.box[1];
+    const double gap = (std::max)({b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3]});
+    CHECK_MSG(gap >= padding / 256. * (1. - 1e-9), "gap " << gap << " below the padding");
+    for(const auto& box : report.box)
+      CHECK(box[0] >= padding / 256. - 1e-12 && box[1] >= padding / 256. - 1e-12 &&
+            box[2] <= 1. - padding / 256. + 1e-12 && box[3] <= 1. - padding / 256. + 1e-12);
+  }
+}
+
+CUT_TEST(bounding_box_term_fills_the_square)
+{
+  // a flat 4:1 rectangle: packed as it is it covers at most a quarter of the
+  // square; pulled into a 1:1 box it covers much more, still without flips
+  // or crossings
+  Surface_mesh mesh;
+  build_mesh(grid_soup(24, 6, 4., 1.), mesh);
+  Cut_run<Surface_mesh> plain(mesh), boxed(mesh);
+  plain.run();
+  boxed.run(P::bounding_box_aspect_ratio(1.));
+  check_cut_result(mesh, plain);
+  check_cut_result(mesh, boxed);
+  CHECK(plain.result.uv_coverage < 0.26);
+  CHECK_MSG(boxed.result.uv_coverage > plain.result.uv_coverage + 0.2,
+            "coverage " << plain.result.uv_coverage << " -> " << boxed.result.uv_coverage);
+  CHECK(boxed.result.distortion > plain.result.distortion); // the price of the box
+  // a wrong aspect ratio is refused
+  Cut_run<Surface_mesh> bad(mesh);
+  CHECK_EQ(bad.run(P::bounding_box_aspect_ratio(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  CHECK_EQ(bad.run(P::padding(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  CHECK_EQ(bad.run(P::texture_size(0)).error, SMP::ERROR_WRONG_PARAMETER);
+}
+
+CUT_TEST(scaffold_gradient_matches_finite_differences)
+{
+  Disk_chart chart;
+  make_disk_chart(wavy_disk_soup(6, 18, 2), chart);
+  ic::Scaffold_term scaffold(chart.mesh);
+  REQUIRE(scaffold.update(chart.x) == ic::Energy_term::Update::ELEMENTS);
+  REQUIRE(scaffold.number_of_triangles() > 0);
+  // at the rebuild the scaffold is at rest: no energy, no gradient
+  check_gradient(scaffold, chart.x, 1);
+  // away from rest
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  ic::UV_vector y = chart.x;
+  for(Eigen::Index i = 0; i < y.size(); ++i) y[i] += jitter(rng);
+  REQUIRE(std::isfinite(scaffold.value(y)));
+  check_gradient(scaffold, y, 2);
+}
+
+CUT_TEST(scaffold_stops_a_border_before_it_crosses_another)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(4, 16), chart);
+  ic::Scaffold_term scaffold(chart.mesh);
+  scaffold.update(chart.x);
+  CHECK(!scaffold.has_crossing(chart.x));
+  // push one border vertex straight across the disk: the step is cut before
+  // it leaves the free space, and the full step is not admissible
+  const auto segments = ic::border_segments(chart.mesh);
+  const int v = segments.front()[0];
+  ic::UV_vector step = ic::UV_vector::Zero(chart.x.size());
+  step.segment<2>(2 * v) = -3. * chart.x.segment<2>(2 * v);
+  CHECK(scaffold.max_step(chart.x, step) < 1.);
+  // a map whose border crosses itself has no finite energy
+  ic::UV_vector crossed = chart.x;
+  crossed.segment<2>(2 * v) *= -1.5;
+  CHECK(scaffold.has_crossing(crossed));
+  CHECK(std::isinf(scaffold.value(crossed)));
+}
+
+CUT_TEST(bounding_box_gradient_matches_finite_differences)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(5, 20), chart);
+  // stretch the disk so that border vertices lie outside the 2:1 box
+  ic::UV_vector x = chart.x;
+  for(Eigen::Index i = 0; i < x.size(); i += 2) x[i] *= 1.7;
+  ic::Bounding_box_term box(chart.mesh, 2.);
+  box.update(x);
+  CHECK(box.value(x) > 0.);
+  check_gradient(box, x, 3);
+  // inside the box (the disk shrunk about its center) there is nothing to pay
+  ic::UV_vector center = ic::UV_vector::Zero(2);
+  for(Eigen::Index i = 0; i < x.size(); i += 2) center += x.segment<2>(i);
+  center /= double(x.size() / 2);
+  ic::UV_vector small = x;
+  for(Eigen::Index i = 0; i < x.size(); i += 2) small.segment<2>(i) = center + 0.1 * (x.segment<2>(i) - center);
+  CHECK_EQ(box.value(small), 0.);
+}
+
+CUT_TEST_MAIN()
