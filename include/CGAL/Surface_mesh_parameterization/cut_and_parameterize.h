@@ -193,8 +193,27 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   - `face_discontinuity_map`: output face → double, the field v of the last pass
 ///   - `progress_callback`: `std::function<bool(const Cut_and_parameterize_progress&)>`;
 ///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
+///   - `global_injectivity`: bool, no chart overlaps itself (a scaffold keeps UV
+///     borders from crossing, see below); default true
+///   - `texture_size`: int ≥ 1, texels per side of the texture; default 1024
+///   - `padding`: double ≥ 0, gap in texels between charts and to the square's
+///     sides; default 2
+///   - `world_units`: bool, keep the 3D scale (charts still packed apart) instead
+///     of scaling the atlas into the unit square; default false
+///   - `bounding_box_aspect_ratio`: double ≥ 0, if positive the final solve pulls
+///     each chart into a rectangle of this width / height, so that it fills the
+///     atlas better at some cost in distortion; default 0 (off)
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
+///
+/// The result is a texture atlas: the final solve runs from the alternation's
+/// map; if a chart's UV border then crosses itself, that solve is redone from a
+/// Tutte embedding of the cut mesh with a scaffold energy term (a triangulation
+/// of the free space around each chart, rebuilt at every Newton iteration),
+/// which never lets a border cross. The charts are then rotated, scaled by one
+/// common factor (equal texel density, reported in `uv_scale`) and packed into
+/// the unit square. `distortion` is E_d of the map in 3D units (the UVs divided
+/// by `uv_scale`).
 ///
 /// Degenerate faces (zero area, needles, coincident corners) are accepted
 /// unless `reject_degenerate_faces` is set: their rest shape is clamped to a
@@ -215,6 +234,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///
 /// \pre the mesh is a triangle mesh
 /// \post on success: every UV is finite, no face of the UV map is flipped,
+///   no two UV border segments cross (with `global_injectivity`), every UV lies
+///   in [0,1]² (unless `world_units`) with charts at least `padding` texels
+///   apart,
 ///   every seam edge is an edge of the mesh that is not on its boundary, and
 ///   cutting along the seams leaves every connected component a topological
 ///   disk (checked by assertions in debug builds)

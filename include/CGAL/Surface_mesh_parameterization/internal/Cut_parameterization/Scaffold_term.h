@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <limits>
 #include <unordered_map>
@@ -45,7 +46,6 @@ class Scaffold_term : public Energy_term
   std::vector<int> segment_chart_;
   int number_of_charts_ = 0;
   double weight_ = 0.;                       // energy weight of one scaffold triangle
-  static constexpr double local_length = 4.; // longest scaffold edge between border vertices, in mean border segments
 
   // The scaffold: corners are UV vertices (>= 0) or fixed box corners (-1 - k).
   std::vector<std::array<int, 3>> triangles_;
@@ -96,10 +96,12 @@ public:
 
   std::size_t number_of_triangles() const { return triangles_.size(); }
 
-  /// True if some chart's border crosses itself at x.
+  /// True if two segments of some chart's border that share no vertex meet
+  /// at x (cross, touch or overlap: a border that only touches itself is
+  /// refused too, so that round-off in the packing cannot make it cross).
   bool has_crossing(const UV_vector& x) const
   {
-    return count_border_crossings(segments_, x, &segment_chart_, 1) > 0;
+    return count_border_crossings(segments_, x, &segment_chart_, 1, true) > 0;
   }
 
   /// Rebuilds the scaffold around the charts at x (which must be admissible).
@@ -260,30 +262,10 @@ private:
     }
 
     const double min_area = 1e-14 * half * half;
-    double border_length = 0.;
-    int border_count = 0;
-    for(std::size_t i = 0; i < segments_.size(); ++i)
-      if(segment_chart_[i] == c)
-      {
-        border_length += (Vector2(x[2*segments_[i][0]], x[2*segments_[i][0]+1]) -
-                          Vector2(x[2*segments_[i][1]], x[2*segments_[i][1]+1])).norm();
-        ++border_count;
-      }
-    // Only triangles whose border-to-border edges are at most a few border
-    // segments long: they are where borders come close, and they couple only
-    // nearby unknowns (a long triangle would fill the factorization). A step
-    // that crosses a border through the gaps is refused by value().
-    const double max_length = local_length * border_length / (std::max)(border_count, 1);
     for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     {
       if(f->info() % 2 != 1) continue;
       const std::array<int, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      bool local = true;
-      for(int k = 0; k < 3; ++k)
-        if(t[k] >= 0 && t[(k+1)%3] >= 0 &&
-           (Vector2(x[2*t[k]], x[2*t[k]+1]) - Vector2(x[2*t[(k+1)%3]], x[2*t[(k+1)%3]+1])).norm() > max_length)
-          local = false;
-      if(!local) continue;
       triangles_.push_back(t);
       const Matrix2 D = edges(x, triangles_.size() - 1);
       if(!(D.determinant() > 2. * min_area)) { triangles_.pop_back(); continue; } // a sliver of round-off

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
@@ -51,14 +52,25 @@ inline bool segments_cross_properly(const Vector2& p, const Vector2& q, const Ve
   return o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR && o3 != o4;
 }
 
+/// True if the closed segments pq and rs have a point in common (crossing,
+/// touching or overlapping), by exact predicates.
+inline bool segments_meet(const Vector2& p, const Vector2& q, const Vector2& r, const Vector2& s)
+{
+  using Point = CGAL::Epick::Point_2;
+  return CGAL::do_intersect(CGAL::Epick::Segment_2(Point(p.x(), p.y()), Point(q.x(), q.y())),
+                            CGAL::Epick::Segment_2(Point(r.x(), r.y()), Point(s.x(), s.y())));
+}
+
 /// Number of pairs of segments (UV-vertex index pairs into x) that cross
-/// properly; segments sharing a vertex index are not tested. If `group` is
-/// not null, only pairs in the same group (e.g. the same chart) count.
+/// properly (with `touching`, that meet at all); segments sharing a vertex
+/// index are not tested. If `group` is not null, only pairs in the same
+/// group (e.g. the same chart) count.
 /// Counting stops once `limit` crossings are found. Non-finite coordinates
 /// make every segment through them count as crossing nothing.
 inline std::size_t count_border_crossings(const std::vector<std::array<int, 2>>& segments, const UV_vector& x,
                                           const std::vector<int>* group = nullptr,
-                                          std::size_t limit = std::numeric_limits<std::size_t>::max())
+                                          std::size_t limit = std::numeric_limits<std::size_t>::max(),
+                                          bool touching = false)
 {
   const std::size_t n = segments.size();
   if(n < 2) return 0;
@@ -113,8 +125,9 @@ inline std::size_t count_border_crossings(const std::vector<std::array<int, 2>>&
           const auto& s = segments[i];
           const auto& t = segments[j];
           if(s[0] == t[0] || s[0] == t[1] || s[1] == t[0] || s[1] == t[1]) continue;
-          if(segments_cross_properly(point(s[0]), point(s[1]), point(t[0]), point(t[1])) && ++crossings >= limit)
-            return crossings;
+          const bool meet = touching ? segments_meet(point(s[0]), point(s[1]), point(t[0]), point(t[1]))
+                                     : segments_cross_properly(point(s[0]), point(s[1]), point(t[0]), point(t[1]));
+          if(meet && ++crossings >= limit) return crossings;
         }
     }
   return crossings;

@@ -103,12 +103,12 @@ inline std::vector<Vector2> oriented_extents(const std::vector<Vector2>& hull, c
 
 /// Angle θ in [0, π/2) whose frame (u(θ), its normal) gives `hull` the
 /// bounding rectangle of smallest area (`square_fit` false), or of smallest
-/// larger side (`square_fit` true, then smallest area), among the hull edge
-/// directions: the chart lies flush with a side of its rectangle (the
-/// minimum-area rectangle always does). Oblique frames are left out on
-/// purpose: they can give a smaller square (a 10 × 0.5 strip on the diagonal
-/// needs a side of 7.4, not 10) but leave charts askew in the texture.
-/// Ties go to the smallest angle.
+/// larger side (`square_fit` true, then smallest area). The minimum-area
+/// rectangle lies flush with a hull edge, so the hull edge directions are
+/// enough for it. The smallest enclosing square of a lone chart may be
+/// oblique (a 10 × 0.5 strip on the diagonal needs a side of 7.4, not 10: 1.8
+/// times its texel density), so `square_fit` also tries every degree from
+/// the minimum-area frame. Ties go to the smallest angle.
 inline double best_angle(const std::vector<Vector2>& hull, bool square_fit)
 {
   const double quarter = 0.5 * 3.14159265358979323846;
@@ -120,6 +120,11 @@ inline double best_angle(const std::vector<Vector2>& hull, bool square_fit)
     angles.push_back(reduce(std::atan2(e.y(), e.x())));
   }
   if(angles.empty()) return 0.;
+  if(square_fit) // every degree from the minimum-area frame
+  {
+    const double base = best_angle(hull, false);
+    for(int degree = 1; degree < 90; ++degree) angles.push_back(reduce(base + quarter * degree / 90.));
+  }
   std::sort(angles.begin(), angles.end());
   angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
   const std::vector<Vector2> ext = oriented_extents(hull, angles);
