@@ -83,21 +83,6 @@ struct Cut_run
     return result;
   }
 
-  /// The UVs divided by result.uv_scale: the map in 3D units, whose E_d is result.distortion.
-  struct World_uv_map
-  {
-    using key_type = halfedge_descriptor;
-    using value_type = Point_2;
-    using reference = Point_2;
-    using category = boost::readable_property_map_tag;
-    const Cut_run* run;
-    friend Point_2 get(const World_uv_map& m, const halfedge_descriptor& h)
-    {
-      const Point_2& p = m.run->uv(h);
-      return Point_2(p.x() / m.run->result.uv_scale, p.y() / m.run->result.uv_scale);
-    }
-  };
-  World_uv_map world_uvs() const { return World_uv_map{this}; }
 
   /// Seam flags in the order of edges(mesh).
   std::vector<char> seam_vector() const
@@ -404,7 +389,7 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
   }
 
   // --- reported E_d and E_s are those of the outputs (E_d in 3D units)
-  const double energy = SMP_::distortion_energy(mesh, run.world_uvs());
+  const double energy = SMP_::distortion_energy(mesh, mutable_run.uvs(), SMP_::parameters::uv_scale(run.result.uv_scale));
   CHECK(std::isfinite(run.result.distortion) && run.result.distortion >= 4. - 1e-9);
   CHECK_REL(energy, run.result.distortion, 1e-9);
   double seam_length = 0.;

@@ -79,7 +79,8 @@ void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<
   // the UVs of cut_and_parameterize are a valid vertex UV map of the seam mesh
   auto& r = const_cast<Cut_run<Mesh>&>(run);
   CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, r.uvs()), std::size_t(0));
-  CHECK_REL(SMP::distortion_energy(seam_mesh, r.world_uvs()), run.result.distortion, 1e-9);
+  CHECK_REL(SMP::distortion_energy(seam_mesh, r.uvs(), SMP::parameters::uv_scale(run.result.uv_scale)),
+            run.result.distortion, 1e-9);
   {
     auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
     const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), border, uv);

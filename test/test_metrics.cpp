@@ -158,6 +158,13 @@ CUT_TYPED_TEST(sheared_triangle, Mesh_types)
     for(std::size_t i = 0; i < 3; ++i)
       put(uv, vertex_of[i], Point_2(soup.points[i][0] + k * soup.points[i][1], soup.points[i][1]));
     CHECK_REL(SMP::distortion_energy(mesh, uv), 4. + 2. * k * k, 1e-12);
+    // the same map scaled by 3 (a packed atlas), measured with uv_scale(3)
+    for(std::size_t i = 0; i < 3; ++i)
+      put(uv, vertex_of[i], Point_2(3. * (soup.points[i][0] + k * soup.points[i][1]), 3. * soup.points[i][1]));
+    CHECK(SMP::distortion_energy(mesh, uv) > 4. + 2. * k * k + 1.);
+    CHECK_REL(SMP::distortion_energy(mesh, uv, SMP::parameters::uv_scale(3.)), 4. + 2. * k * k, 1e-12);
+    CHECK_REL(SMP::face_distortion(*faces(mesh).begin(), mesh, uv, SMP::parameters::uv_scale(3.)), 4. + 2. * k * k,
+              1e-12);
   }
 }
 

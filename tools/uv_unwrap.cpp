@@ -387,7 +387,8 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
     }
     preview.faces.push_back(corners);
     preview.corner_uv.push_back(uvs);
-    preview.face_distortion.push_back(SMP::face_distortion(f, mesh, uvmap));
+    preview.face_distortion.push_back(
+      SMP::face_distortion(f, mesh, uvmap, SMP::parameters::uv_scale(summary.result.uv_scale)));
     preview.face_v.push_back(v[f]);
   }
   for(auto e : edges(mesh))

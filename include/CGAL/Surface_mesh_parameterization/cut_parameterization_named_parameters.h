@@ -71,6 +71,10 @@ CGAL_SMP_CUT_NAMED_PARAMETER(world_units_t, world_units)
 /// Atlas: width / height of a rectangle that the final solve pulls each chart into (double; default 0: off).
 CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_aspect_ratio_t, bounding_box_aspect_ratio)
 
+/// Metrics: UV length per 3D length of the map measured (e.g. `uv_scale` of a
+/// packed atlas); the UVs are divided by it (double, default 1).
+CGAL_SMP_CUT_NAMED_PARAMETER(uv_scale_t, uv_scale)
+
 #undef CGAL_SMP_CUT_NAMED_PARAMETER
 
 } // namespace Surface_mesh_parameterization

@@ -1,6 +1,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
 
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
@@ -44,6 +45,14 @@ Vector2 corner_uv(const TriangleMesh& mesh, const UVMap& uvmap,
     const auto& p = get(uvmap, target(h, mesh));
     return Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
   }
+}
+
+/// The `uv_scale` named parameter (default 1).
+template <typename NamedParameters>
+double uv_scale(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, CGAL::Surface_mesh_parameterization::internal_np::uv_scale), 1.);
 }
 
 template <typename Point>
@@ -101,7 +110,9 @@ auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
 /// `uvmap` is keyed either by halfedges (UV of the corner at `target(h)` in
 /// `face(h)`, as written by `cut_and_parameterize()`) or by vertices
 /// (e.g. of a `CGAL::Seam_mesh`).
-/// Named parameters: `vertex_point_map` (CGAL).
+/// Named parameters: `vertex_point_map` (CGAL); `uv_scale` (UV length per 3D
+/// length, e.g. `Cut_and_parameterize_result::uv_scale` of a packed atlas: the
+/// UVs are divided by it; default 1).
 /// \pre `f` is a triangle
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -111,7 +122,7 @@ double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descript
 {
   const auto aj = internal::cut::face_area_and_jacobian(f, mesh, uvmap, internal::cut::vertex_points(mesh, np));
   if(!aj.second.allFinite()) return std::numeric_limits<double>::infinity();
-  return internal::cut::symmetric_dirichlet_measure(aj.second);
+  return internal::cut::symmetric_dirichlet_measure(aj.second / internal::cut::uv_scale(np));
 }
 
 /// \ingroup PkgCutParameterizationRef
@@ -120,7 +131,7 @@ double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descript
 /// (A_f: 3D area), as in the paper's Table 1. Minimum 4; +∞ if any face is
 /// flipped or collapsed in UV. Degenerate 3D faces (zero area, or height
 /// below 1e-4 times the longest side) have no weight.
-/// Named parameters: `vertex_point_map` (CGAL). `uvmap` as in `face_distortion()`.
+/// Named parameters: `vertex_point_map` (CGAL), `uv_scale`; `uvmap` as in `face_distortion()`.
 /// \pre `mesh` is a non-empty triangle mesh
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -128,6 +139,7 @@ double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   const auto vpm = internal::cut::vertex_points(mesh, np);
+  const double scale = internal::cut::uv_scale(np);
   double sum = 0., area = 0.;
   for(auto f : faces(mesh))
   {
@@ -135,7 +147,7 @@ double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
     if(!aj.second.allFinite()) continue; // degenerate 3D face
     if(!(aj.second.determinant() > 0.))
       return std::numeric_limits<double>::infinity();
-    sum += aj.first * internal::cut::symmetric_dirichlet_measure(aj.second);
+    sum += aj.first * internal::cut::symmetric_dirichlet_measure(aj.second / scale);
     area += aj.first;
   }
   return area > 0. ? sum / area : std::numeric_limits<double>::quiet_NaN();
@@ -262,7 +274,9 @@ double uv_area(const TriangleMesh& mesh, const UVMap& uvmap)
 /// clamped by `cut_and_parameterize()` (or refused with its
 /// `reject_degenerate_faces` option) and have no weight in
 /// `distortion_energy()`.
-/// Named parameters: `vertex_point_map` (CGAL).
+/// Named parameters: `vertex_point_map` (CGAL); `uv_scale` (UV length per 3D
+/// length, e.g. `Cut_and_parameterize_result::uv_scale` of a packed atlas: the
+/// UVs are divided by it; default 1).
 /// \pre `f` is a triangle
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 bool is_degenerate_face(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh,
