@@ -10,7 +10,9 @@
 #   -DBUILD_TESTING=ON extracts; otherwise extracted here from libcgal-demo's
 #   /usr/share/doc/libcgal-dev/data.tar.gz).
 # Needs rsvg-convert (Debian: librsvg2-bin) to turn SVG into PNG and to shrink
-# the 1024x768 renders below 300 KB. About a minute on two cores.
+# the 1024x768 renders below 300 KB. About a minute and a half on two cores.
+# Each run prints the numbers that the captions of the manual and of
+# README.md quote (E_s, E_d, coverage, border crossings).
 set -euo pipefail
 
 doc="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -52,7 +54,7 @@ unwrap() {
   shift 2
   "$uv_unwrap" "$meshes/$name.off" -q -o "$work/$stem.obj" --stats "$work/$stem.json" \
     --svg "$work/$stem.svg" --png "$work/$stem.png" "$@"
-  echo "$stem: $(tr -d ' \n' < "$work/$stem.json" | grep -o '"seam_length":[^,]*,"distortion":[^,]*')"
+  echo "$stem: $(tr -d ' \n' < "$work/$stem.json" | grep -o '"charts":[^,]*\|"seam_length":[^,]*\|"distortion":[^,]*\|"border_crossings":[^,]*\|"uv_coverage":[^,]*' | tr '\n' ' ')"
 }
 
 mkdir -p "$fig"
@@ -66,10 +68,21 @@ svg_to_png "$work/lion_head_lambda_0.25.svg" "$fig/lion_head_lambda_0.25_uv.png"
 unwrap lion-head lion_head_lambda_4 --lambda 4
 svg_to_png "$work/lion_head_lambda_4.svg" "$fig/lion_head_lambda_4_uv.png"
 
-# Closed surfaces of genus 3 and 2: initial cut, then the optimized seams.
+# Closed surface of genus 3: initial cut, then the optimized seams.
 unwrap elephant elephant
 shrink_png "$work/elephant.png" "$fig/elephant_checker.png"
-unwrap eight eight
-svg_to_png "$work/eight.svg" "$fig/eight_uv.png"
+
+# Texture atlas. Global injectivity: the same elephant without it (two parts
+# of its UV border cross) and with it (the default, above).
+unwrap elephant elephant_overlaps --allow-overlaps
+svg_to_png "$work/elephant_overlaps.svg" "$fig/elephant_overlaps_uv.png"
+svg_to_png "$work/elephant.svg" "$fig/elephant_uv.png"
+# A mesh of 26 parts (bones.off, also the default input of
+# examples/texture_atlas.cpp): the charts packed into the unit square.
+unwrap bones bones
+svg_to_png "$work/bones.svg" "$fig/bones_atlas_uv.png"
+# One chart pulled into a 1:1 rectangle (compare with lion_head_uv.png).
+unwrap lion-head lion_head_box --box 1:1
+svg_to_png "$work/lion_head_box.svg" "$fig/lion_head_box_uv.png"
 
 ls -l "$fig"
