@@ -104,6 +104,17 @@ public:
     return count_border_crossings(segments_, x, &segment_chart_, 1, true) > 0;
   }
 
+  /// Per chart (ids of chart_of_faces()): true if its border meets itself at x.
+  std::vector<char> charts_with_crossing(const UV_vector& x) const
+  {
+    std::vector<char> crossing(number_of_charts_, 0);
+    std::vector<std::vector<std::array<int, 2>>> segments(number_of_charts_);
+    for(std::size_t i = 0; i < segments_.size(); ++i) segments[segment_chart_[i]].push_back(segments_[i]);
+    for(int c = 0; c < number_of_charts_; ++c)
+      crossing[c] = count_border_crossings(segments[c], x, nullptr, 1, true) > 0;
+    return crossing;
+  }
+
   /// Rebuilds the scaffold around the charts at x (which must be admissible).
   Update update(const UV_vector& x) override
   {

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 
@@ -146,8 +147,8 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 /// The final solve on the cut mesh (weights 1), from the map of the
 /// alternation. With global injectivity, if a chart's border then crosses
 /// itself, the solve is redone with the scaffold, which keeps borders from
-/// crossing, from a Tutte embedding of the cut mesh (whose border is
-/// convex). The alternation's map is no start for the scaffold: its new cuts
+/// crossing, from a Tutte embedding (whose border is convex) of each chart
+/// that crossed; the other charts start from where they are. The alternation's map is no start for the scaffold: its new cuts
 /// are slits of zero width, and a scaffold built in a slit opened just a
 /// little holds it almost closed (measured: venus E_d 4.77 from there, 4.37
 /// from Tutte; hand1 7.5 and 4.58).
@@ -161,12 +162,20 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
     return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   };
   const Error_code status = solve(false);
-  if(status != OK || !settings.global_injectivity || !Scaffold_term(state.chart).has_crossing(state.x))
-    return status;
-  const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
+  if(status != OK || !settings.global_injectivity) return status;
+  const std::vector<char> crossing = Scaffold_term(state.chart).charts_with_crossing(state.x);
+  if(std::find(crossing.begin(), crossing.end(), 1) == crossing.end()) return OK;
+  // only the charts that overlap themselves start again, from their Tutte map
+  UV_vector tutte;
+  const Embedding_status embedding = disk_charts_embedding(state.chart, tutte);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
   if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
+  int charts = 0;
+  const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
+  for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
+    if(crossing[chart_of_face[f]])
+      for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
   return solve(true);
 }
 
