@@ -65,6 +65,7 @@ struct Options
   std::vector<std::string> meshes;     // empty: the default list
   std::optional<double> lambda;
   std::optional<int> passes;
+  double box = 0.;                     // bounding_box_aspect_ratio (0: off)
   int repeat = 1;
   std::string csv_file;
   bool quick = false;
@@ -94,6 +95,7 @@ void print_usage(const char* program, std::ostream& os)
      << "                      default ../shared/reference relative to the project root\n"
      << "  --lambda X          seam cost lambda (library default if not given)\n"
      << "  --passes N          number of passes (library default if not given)\n"
+     << "  --box W:H           bounding-box term of aspect ratio W/H (default: off)\n"
      << "  --repeat N          runs per mesh; the time reported is their median (default 1)\n"
      << "  --csv FILE          also write the table as CSV\n"
      << "  --quick             only meshes with fewer than " << QUICK_MAX_FACES << " faces\n"
@@ -172,6 +174,16 @@ int parse_options(int argc, char** argv, Options& opt)
       if(!parse_double(v, x) || !(x > 0.) || !std::isfinite(x))
       { std::cerr << "error: --lambda: expected a positive number, got '" << v << "'\n"; return 2; }
       opt.lambda = x;
+    }
+    else if(arg == "--box")
+    {
+      double w, h;
+      if(!value(v)) return 2;
+      const std::size_t colon = v.find(':');
+      if(colon == std::string::npos || !parse_double(v.substr(0, colon), w) || !parse_double(v.substr(colon + 1), h) ||
+         !(w > 0.) || !(h > 0.) || !std::isfinite(w / h))
+      { std::cerr << "error: --box: expected W:H, two positive numbers, got '" << v << "'\n"; return 2; }
+      opt.box = w / h;
     }
     else if(arg == "--passes")
     {
@@ -468,7 +480,7 @@ void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& o
   out.crossings = SMP::number_of_border_crossings(mesh, uv);
   if(!varies)
   {
-    const double ed = SMP::distortion_energy(mesh, uv);
+    const double ed = SMP::distortion_energy(mesh, uv, SMP::parameters::uv_scale(first.uv_scale));
     const double es = SMP::seam_length(mesh, seam);
     if(!close(ed, first.distortion) || !close(es, first.seam_length))
     {
@@ -636,10 +648,10 @@ int main(int argc, char** argv)
 
   namespace P = SMP::parameters;
   std::vector<Row> rows;
-  if(opt.lambda && opt.passes) rows = run(P::lambda(*opt.lambda, P::number_of_passes(*opt.passes)));
-  else if(opt.lambda) rows = run(P::lambda(*opt.lambda));
-  else if(opt.passes) rows = run(P::number_of_passes(*opt.passes));
-  else rows = run(CGAL::parameters::default_values());
+  const SMP::internal::cut::Joint_settings defaults;
+  rows = run(P::lambda(opt.lambda.value_or(defaults.lambda),
+             P::number_of_passes(opt.passes.value_or(defaults.passes),
+             P::bounding_box_aspect_ratio(opt.box))));
 
   // --quick: meshes left out for their size.
   std::vector<std::string> skipped_names;
@@ -709,6 +721,7 @@ int main(int argc, char** argv)
             << "  parameters: lambda "
             << (opt.lambda ? fixed(*opt.lambda, 3) : std::string("default")) << ", passes "
             << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
+            << (opt.box > 0. ? ", box aspect ratio " + fixed(opt.box, 3) : std::string())
             << "; time: median of " << opt.repeat << " run" << (opt.repeat > 1 ? "s" : "")
             << (opt.quick ? "; --quick (faces < 5000)" : "") << "\n\n";
   print_table(std::cout, columns, cells);
