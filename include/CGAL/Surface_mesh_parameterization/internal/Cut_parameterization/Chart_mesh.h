@@ -131,21 +131,29 @@ inline int number_of_flipped_faces(const Chart_mesh& mesh, const UV_vector& x)
   return flipped;
 }
 
-/// Boundary loops of the chart mesh, each a cycle of UV vertices oriented
-/// like the faces (interior on the left). Empty for a closed mesh.
-inline std::vector<std::vector<int>> boundary_loops(const Chart_mesh& mesh)
+/// Border edges of the chart mesh as (a, b) UV-vertex pairs, oriented like
+/// their face (interior on the left), in face order.
+inline std::vector<std::array<int, 2>> border_segments(const Chart_mesh& mesh)
 {
   std::unordered_map<std::uint64_t, int> directed;
   directed.reserve(3 * mesh.faces.size());
   for(const auto& t : mesh.faces)
     for(int k = 0; k < 3; ++k)
       directed.emplace(directed_edge_key(t[k], t[(k+1)%3]), 0);
-
-  std::unordered_map<int, int> next; // boundary successor
+  std::vector<std::array<int, 2>> segments;
   for(const auto& t : mesh.faces)
     for(int k = 0; k < 3; ++k)
       if(!directed.count(directed_edge_key(t[(k+1)%3], t[k])))
-        next.emplace(t[k], t[(k+1)%3]);
+        segments.push_back({t[k], t[(k+1)%3]});
+  return segments;
+}
+
+/// Boundary loops of the chart mesh, each a cycle of UV vertices oriented
+/// like the faces (interior on the left). Empty for a closed mesh.
+inline std::vector<std::vector<int>> boundary_loops(const Chart_mesh& mesh)
+{
+  std::unordered_map<int, int> next; // boundary successor
+  for(const auto& s : border_segments(mesh)) next.emplace(s[0], s[1]);
 
   std::vector<std::vector<int>> loops;
   std::unordered_map<int, bool> visited;

@@ -23,23 +23,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-/// Border edges of the chart mesh as (a, b) UV-vertex pairs, oriented like
-/// their face (interior on the left), in face order.
-inline std::vector<std::array<int, 2>> border_segments(const Chart_mesh& mesh)
-{
-  std::unordered_map<std::uint64_t, int> directed;
-  directed.reserve(3 * mesh.faces.size());
-  for(const auto& t : mesh.faces)
-    for(int k = 0; k < 3; ++k)
-      directed.emplace(directed_edge_key(t[k], t[(k+1)%3]), 0);
-  std::vector<std::array<int, 2>> segments;
-  for(const auto& t : mesh.faces)
-    for(int k = 0; k < 3; ++k)
-      if(!directed.count(directed_edge_key(t[(k+1)%3], t[k])))
-        segments.push_back({t[k], t[(k+1)%3]});
-  return segments;
-}
-
 /// True if the open segments pq and rs cross at a single interior point
 /// (exact orientation predicates; touching and collinear overlap do not count).
 inline bool segments_cross_properly(const Vector2& p, const Vector2& q, const Vector2& r, const Vector2& s)
