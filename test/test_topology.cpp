@@ -231,7 +231,12 @@ const bool data_cases_registered = [] {
     return false;
   }
   register_data_cases<Surface_mesh>();
+#ifdef NDEBUG
+  // Debug (the sanitizer run) checks these meshes once: the second mesh
+  // type doubles the time (elephant alone: 46 s) for a path that the
+  // generated cases above already cover with both types.
   register_data_cases<Polyhedron>();
+#endif
   return true;
 }();
 

@@ -66,6 +66,7 @@ struct Options
   std::size_t repeat_faces = 20000;
   double timeout = 300.;
   std::string work_dir;
+  std::size_t shard = 0, shards = 1; // this run checks the meshes i with i % shards == shard
 };
 
 const char* const usage_text =
@@ -87,6 +88,8 @@ const char* const usage_text =
   "  --repeat-faces N     unwrap meshes with at most N faces twice and compare the\n"
   "                       outputs byte for byte (default 20000; 0: never)\n"
   "  --work-dir DIR       scratch directory (default: a new one in the temp directory)\n"
+  "  --shard K/N          check only the meshes K, K+N, K+2N, ... (0 <= K < N) of the\n"
+  "                       sorted list, so that N runs share the work (default 0/1)\n"
   "  -- ARGS...           passed to uv_unwrap after its own arguments\n";
 
 // ---------------------------------------------------------------- children
@@ -450,6 +453,23 @@ bool parse_arguments(int argc, char** argv, Options& options)
     else if(arg == "--repeat-faces") options.repeat_faces = count();
     else if(arg == "--timeout") options.timeout = double(count());
     else if(arg == "--work-dir") options.work_dir = value();
+    else if(arg == "--shard")
+    {
+      const std::string v = value();
+      std::size_t slash = v.find('/'), k = 0, n = 0;
+      char* end = nullptr;
+      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < v.size()
+                && v.find_first_not_of("0123456789/") == std::string::npos;
+      if(ok)
+      {
+        k = std::strtoul(v.c_str(), &end, 10);
+        n = std::strtoul(v.c_str() + slash + 1, &end, 10);
+        ok = *end == 0 && n >= 1 && k < n;
+      }
+      if(!ok) throw std::runtime_error("invalid value '" + v + "' for --shard (K/N with 0 <= K < N)");
+      options.shard = k;
+      options.shards = n;
+    }
     else if(arg == "--")
     {
       options.uv_unwrap_args.assign(argv + i + 1, argv + argc);
@@ -485,6 +505,12 @@ int run(const Options& options)
     else
       throw std::runtime_error("no such file or directory: " + input);
   }
+  if(options.shards > 1)
+  {
+    std::vector<std::pair<std::string, fs::path>> mine;
+    for(std::size_t i = options.shard; i < meshes.size(); i += options.shards) mine.push_back(meshes[i]);
+    meshes.swap(mine);
+  }
 
   fs::path work = options.work_dir.empty()
                     ? fs::temp_directory_path() / ("check_all_meshes_" + std::to_string(getpid()))
@@ -502,7 +528,10 @@ int run(const Options& options)
   const bool check_overlaps = !passes_option("--allow-overlaps");
   const bool check_unit_square = !passes_option("--world-units");
 
-  std::cout << "check_all_meshes: " << meshes.size() << " mesh files; time limit " << options.timeout
+  std::cout << "check_all_meshes: " << meshes.size() << " mesh files"
+            << (options.shards > 1 ? " (shard " + std::to_string(options.shard) + "/" + std::to_string(options.shards) + ")"
+                                   : std::string())
+            << "; time limit " << options.timeout
             << " s per run; "
             << (options.max_faces ? "skipping meshes above " + std::to_string(options.max_faces) + " faces"
                                   : std::string("no face limit"))
