@@ -4,7 +4,7 @@
 // cut_result_checks.h) and CGAL's own parameterizers accept the seam mesh.
 // Then the contract of the options: scale invariance, determinism, user
 // seams kept, per-face λ, progress callback and cancellation, invalid
-// parameters, several passes.
+// parameters, several passes, and the timings and counts of the result.
 #include "cut_result_checks.h"
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -112,6 +112,31 @@ void print(const std::string& what, const SMP::Cut_and_parameterize_result& r, d
             << "), E_s " << r.seam_length << std::endl;
 }
 
+/// The timings of a result: finite, non-negative, the phases within the
+/// total; and at least one Cholesky factorization per Newton iteration
+/// (each iteration factorizes its Hessian, and so does the step that finds
+/// convergence). `completed`: the run went to the end (not canceled).
+void check_timings(const SMP::Cut_and_parameterize_result& r, bool completed = true)
+{
+  const SMP::Cut_and_parameterize_timings& t = r.timings;
+  const double parts[] = {t.initialization, t.u_steps, t.v_steps, t.cut_extraction, t.final_solve, t.packing};
+  double sum = 0.;
+  for(const double x : parts)
+  {
+    CHECK_MSG(std::isfinite(x) && x >= 0., "phase time " << x);
+    sum += x;
+  }
+  CHECK_MSG(std::isfinite(t.total) && t.total > 0., "total time " << t.total);
+  // the phases are disjoint intervals inside the total's
+  CHECK_MSG(sum <= t.total * (1. + 1e-9) + 1e-6, "phases " << sum << " s, total " << t.total << " s");
+  CHECK(r.number_of_factorizations >= r.newton_iterations);
+  if(completed)
+  {
+    CHECK(r.newton_iterations > 0);
+    CHECK(t.initialization > 0. && t.final_solve > 0.);
+  }
+}
+
 // A straight seam from the apex to the border unrolls this cone isometrically (E_d = 4).
 const double cone_height = 6.;
 Soup tall_cone() { return cone_soup(12, 32, 1., cone_height); } // 736 faces, apex first
@@ -148,6 +173,8 @@ CUT_TYPED_TEST(cone_is_cut_to_its_apex, Mesh_types)
   CHECK_MSG(run.result.distortion < uncut - 0.5 && run.result.distortion < 0.5 * (uncut + 4.),
             "E_d " << run.result.distortion << " vs uncut " << uncut);
   CHECK(run.result.initial_distortion > run.result.distortion);
+  check_timings(run.result);
+  CHECK(run.result.timings.u_steps > 0. && run.result.timings.v_steps > 0.);
   check_cgal_parameterizers_accept_the_seams(mesh, run);
 }
 
@@ -427,6 +454,7 @@ CUT_TYPED_TEST(progress_callback_and_cancel, Mesh_types)
     for(auto& entry : canceled.uv_storage) entry.second = Point_2(-7., 13.);
     canceled.run(SMP::parameters::progress_callback(cancel));
     CHECK_EQ(canceled.result.error, SMP::ERROR_CANCELED);
+    check_timings(canceled.result, false);
     CHECK_EQ(seen, stop_at == 0 ? 1 : stop_at + 1);
     CHECK_EQ(canceled.number_of_seam_edges(), std::size_t(0));
     std::size_t changed = 0;
@@ -480,6 +508,8 @@ CUT_TYPED_TEST(two_passes_extend_the_seams_of_one, Mesh_types)
   two.run(SMP::parameters::number_of_passes(2));
   check_cut_result(mesh, one);
   check_cut_result(mesh, two);
+  check_timings(one.result);
+  check_timings(two.result);
   print("1 pass", one.result, 0.);
   print("2 passes", two.result, 0.);
   // the first pass of a 2-pass run is the 1-pass run: its seams are kept
@@ -494,6 +524,8 @@ CUT_TYPED_TEST(two_passes_extend_the_seams_of_one, Mesh_types)
   Cut_run<TestType> none(mesh);
   none.run(SMP::parameters::number_of_passes(0));
   check_cut_result(mesh, none);
+  check_timings(none.result);
+  CHECK(none.result.timings.u_steps == 0. && none.result.timings.v_steps == 0.);
   CHECK_EQ(none.result.number_of_seam_edges, std::size_t(0));
   CHECK_REL(none.result.distortion, uncut_distortion(mesh), 1e-3);
 }

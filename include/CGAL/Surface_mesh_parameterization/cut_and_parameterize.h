@@ -26,6 +26,23 @@ struct Cut_and_parameterize_progress
 };
 
 /// \ingroup PkgCutParameterizationRef
+/// Wall-clock time, in seconds (`std::chrono::steady_clock`), of the phases of
+/// one call to `cut_and_parameterize()`. The parts add up to at most `total`:
+/// the rest goes to argument checks, writing the outputs, the statistics of the
+/// result and the progress callback. Measuring changes nothing in the result.
+/// After an error, the phases not reached are 0.
+struct Cut_and_parameterize_timings
+{
+  double initialization = 0.; ///< indexing of the mesh, initial cut, chart mesh and Tutte map
+  double u_steps = 0.;        ///< Newton minimizations of the UVs inside the alternation
+  double v_steps = 0.;        ///< solves of the discontinuity field v
+  double cut_extraction = 0.; ///< cut paths from v, and cutting the chart mesh along them
+  double final_solve = 0.;    ///< final solve on the cut mesh, scaffold re-solve included
+  double packing = 0.;        ///< packing of the charts into the square
+  double total = 0.;          ///< the whole call
+};
+
+/// \ingroup PkgCutParameterizationRef
 /// Outcome of `cut_and_parameterize()`.
 struct Cut_and_parameterize_result
 {
@@ -33,6 +50,9 @@ struct Cut_and_parameterize_result
   std::size_t number_of_charts = 0;    ///< connected components of the cut mesh
   std::size_t number_of_seam_edges = 0;///< seam edges (mesh boundary excluded)
   std::size_t newton_iterations = 0;   ///< total projected Newton iterations
+  /// numeric Cholesky factorizations of the Newton Hessians (at least one per
+  /// iteration; the Tutte and v solves, one factorization each, not counted)
+  std::size_t number_of_factorizations = 0;
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
@@ -44,6 +64,8 @@ struct Cut_and_parameterize_result
   double uv_coverage = 0.;
   /// UV length per unit of 3D length (the common scale of all charts; 1 with `world_units`)
   double uv_scale = 1.;
+  /// where the time went
+  Cut_and_parameterize_timings timings;
   /// `true` if `error` is `OK`
   bool ok() const { return error == OK; }
 };
@@ -126,6 +148,19 @@ void write_seams(const Surface& surface, const Joint_state& state, SeamEdgeMap s
     put(seam_edge_map, surface.edges[e], bool(state.is_cut[e] && !border[e]));
 }
 
+/// Copies the phases' times, and `total` from `start` to now.
+inline void fill_timings(const Joint_state& state, Steady_clock::time_point start, Cut_and_parameterize_result& result)
+{
+  Cut_and_parameterize_timings& t = result.timings;
+  t.initialization = state.timings.initialization;
+  t.u_steps = state.timings.u_steps;
+  t.v_steps = state.timings.v_steps;
+  t.cut_extraction = state.timings.cut_extraction;
+  t.final_solve = state.timings.final_solve;
+  t.packing = state.timings.packing;
+  t.total = seconds_since(start);
+}
+
 template <typename Surface>
 void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_parameterize_result& result)
 {
@@ -141,6 +176,7 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
     }
   result.seam_length = seam / std::sqrt(state.chart.total_area() / M_PI);
   result.newton_iterations = state.newton_iterations;
+  result.number_of_factorizations = state.factorizations;
   result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
   result.distortion = state.distortion;
@@ -255,17 +291,22 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   using Surface = ic::Indexed_surface<TriangleMesh>;
   using face_descriptor = typename Surface::face_descriptor;
 
+  const ic::Steady_clock::time_point start = ic::Steady_clock::now();
   Cut_and_parameterize_result result;
+  ic::Joint_state state;
+  // every return goes through here, so that the timings are filled after an error too
+  auto finish = [&](Error_code error) {
+    result.error = error;
+    ic::fill_timings(state, start, result);
+    return result;
+  };
   Surface surface;
-  result.error = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
-  if(result.error != OK) return result;
+  const Error_code indexing = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
+  if(indexing != OK) return finish(indexing);
   result.number_of_isolated_vertices = surface.isolated_vertices;
   if(choose_parameter(get_parameter(np, internal_np::reject_degenerate_faces), false) &&
      ic::number_of_degenerate_faces(surface) > 0)
-  {
-    result.error = ERROR_DEGENERATE_FACE;
-    return result;
-  }
+    return finish(ERROR_DEGENERATE_FACE);
 
   const ic::Joint_settings settings = internal::cut::joint_settings(np);
   std::vector<double> face_lambda(surface.number_of_faces());
@@ -274,15 +315,15 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   for(std::size_t f = 0; f < face_lambda.size(); ++f)
   {
     face_lambda[f] = get(lambda_map, surface.faces[f]);
-    if(!(face_lambda[f] > 0.) || !std::isfinite(face_lambda[f])) { result.error = ERROR_WRONG_PARAMETER; return result; }
+    if(!(face_lambda[f] > 0.) || !std::isfinite(face_lambda[f])) return finish(ERROR_WRONG_PARAMETER);
   }
 
-  ic::Joint_state state;
   state.is_cut.resize(surface.edges.size());
   for(std::size_t e = 0; e < surface.edges.size(); ++e) state.is_cut[e] = get(seam_edge_map, surface.edges[e]);
+  state.timings.initialization = ic::seconds_since(start); // joint_optimization() adds the rest
 
-  result.error = ic::joint_optimization(surface, face_lambda, settings, state);
-  if(result.error != OK) return result;
+  const Error_code status = ic::joint_optimization(surface, face_lambda, settings, state);
+  if(status != OK) return finish(status);
 
   ic::write_corner_uvs(mesh, surface, state, uvmap);
   ic::write_seams(surface, state, seam_edge_map);
@@ -290,7 +331,7 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f) put(v_map, surface.faces[f], state.v.size() ? state.v[f] : 1.);
   ic::fill_statistics(surface, state, result);
   CGAL_postcondition(ic::is_valid_atlas(surface, state));
-  return result;
+  return finish(OK);
 }
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

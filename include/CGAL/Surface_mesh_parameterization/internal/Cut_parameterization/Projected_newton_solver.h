@@ -34,6 +34,10 @@ struct Newton_report
 {
   Newton_status status = Newton_status::CONVERGED;
   int iterations = 0;
+  /// numeric Cholesky factorizations of the Hessian, never fewer than
+  /// `iterations`: one per iteration, one for the direction found converged
+  /// (or not followed, STALLED), and the retries with a larger diagonal shift
+  int factorizations = 0;
   double initial_energy = 0.;
   double energy = 0.;
   bool ok() const { return status != Newton_status::LINEAR_SOLVE_FAILED && status != Newton_status::NOT_FINITE; }
@@ -96,7 +100,7 @@ public:
     for(; report.iterations < settings.max_iterations; ++report.iterations)
     {
       if(report.iterations > 0 && update_terms(x)) report.energy = energy(x);
-      if(!newton_direction(x, gradient, direction))
+      if(!newton_direction(x, gradient, direction, report.factorizations))
       {
         report.status = Newton_status::LINEAR_SOLVE_FAILED;
         return report;
@@ -117,7 +121,9 @@ public:
   }
 
 private:
-  bool newton_direction(const UV_vector& x, Eigen::VectorXd& gradient, Eigen::VectorXd& direction)
+  /// Adds the factorizations it does to `factorizations`.
+  bool newton_direction(const UV_vector& x, Eigen::VectorXd& gradient, Eigen::VectorXd& direction,
+                        int& factorizations)
   {
     gradient.setZero();
     hessian_.set_zero();
@@ -129,6 +135,7 @@ private:
     hessian_.add_to_diagonal(shift);
     for(int attempt = 0; attempt < 6; ++attempt)
     {
+      ++factorizations;
       if(cholesky_.factorize(hessian_.matrix()) && cholesky_.solve(-gradient, direction))
         return true;
       hessian_.add_to_diagonal(99. * shift);

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/discontinuity_field.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scoped_timer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 
 #include <algorithm>
@@ -69,6 +70,17 @@ struct Joint_settings
   }
 };
 
+/// Wall seconds spent in each phase (Cut_and_parameterize_timings documents them).
+struct Joint_timings
+{
+  double initialization = 0.; // indexing, initial cut, chart mesh, Tutte
+  double u_steps = 0.;        // Newton minimizations of the alternation
+  double v_steps = 0.;        // discontinuity-field solves
+  double cut_extraction = 0.; // extract_cut_paths() and apply_cuts()
+  double final_solve = 0.;    // final_solve(), scaffold re-solve included
+  double packing = 0.;
+};
+
 /// The state of the cut mesh: which edges are cut, its chart mesh and UVs.
 struct Joint_state
 {
@@ -78,10 +90,12 @@ struct Joint_state
   UV_vector x;
   Eigen::VectorXd v;             // per face
   std::size_t newton_iterations = 0;
+  std::size_t factorizations = 0;   // numeric Cholesky factorizations of the Newton solves
   std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
   double distortion = 0.;           // E_d of the final map, before packing scales it
   Packing_result packing;
+  Joint_timings timings;
 };
 
 /// Cuts the edges of `paths`, then joins any closed slit (a path that does
@@ -119,27 +133,37 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 {
   const std::size_t nf = surface.number_of_faces();
   const double mean_edge = mean_edge_length(surface);
+  Scoped_timer u_setup(state.timings.u_steps);
   Distortion_minimizer minimizer(state.chart, std::vector<double>(nf, 1.));
+  u_setup.stop();
+  Scoped_timer v_setup(state.timings.v_steps);
   Discontinuity_solver v_solver(dual_edges(surface, state.is_cut, face_lambda), state.chart.area, face_lambda);
   state.v = Eigen::VectorXd::Ones(nf);
+  v_setup.stop();
   int alternation = 0;
   for(double eps = settings.epsilon_start; eps > settings.epsilon_end; eps *= 0.5)
     for(int i = 0; i < settings.iterations_per_epsilon; ++i)
     {
+      Scoped_timer u_step(state.timings.u_steps);
       for(std::size_t f = 0; f < nf; ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
       const int cap = alternation == 0 ? settings.max_newton_iterations
                                         : (std::min)(settings.max_newton_iterations,
                                                      settings.max_alternation_newton_iterations);
       const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
       state.newton_iterations += report.iterations;
+      state.factorizations += report.factorizations;
+      u_step.stop();
       if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      Scoped_timer v_step(state.timings.v_steps);
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      v_step.stop();
       ++alternation;
       if(settings.progress && !settings.progress({"alternate", pass, alternation, settings.alternations_per_pass(),
                                                   eps, mean_distortion(state.chart, state.x)}))
         return ERROR_CANCELED;
     }
+  Scoped_timer extraction(state.timings.cut_extraction);
   paths = extract_cut_paths(surface, state.is_cut, state.v, settings.minimum_relative_cut_length);
   return OK;
 }
@@ -159,6 +183,7 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
     Distortion_minimizer minimizer(state.chart, ones, injective, settings.bounding_box_aspect_ratio);
     const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
     state.newton_iterations += report.iterations;
+    state.factorizations += report.factorizations;
     return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   };
   const Error_code status = solve(false);
@@ -187,6 +212,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
                               const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  Scoped_timer initialization(state.timings.initialization);
   if(!make_disks(surface, state.is_cut)) return ERROR_NO_TOPOLOGICAL_DISC;
   state.degenerate_faces = build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
@@ -194,6 +220,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
   state.initial_distortion = mean_distortion(state.chart, state.x);
+  initialization.stop();
   if(settings.progress && !settings.progress({"initialize", 0, 0, settings.alternations_per_pass(),
                                               settings.epsilon_start, state.initial_distortion}))
     return ERROR_CANCELED;
@@ -204,17 +231,23 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
     const Error_code status = alternate(surface, face_lambda, settings, pass, state, paths);
     if(status != OK) return status;
     if(paths.empty()) break;
+    Scoped_timer extraction(state.timings.cut_extraction);
     apply_cuts(surface, paths, state);
+    extraction.stop();
     if(settings.progress && !settings.progress({"cut", pass, settings.alternations_per_pass(),
                                                 settings.alternations_per_pass(), settings.epsilon_end,
                                                 mean_distortion(state.chart, state.x)}))
       return ERROR_CANCELED;
   }
 
+  Scoped_timer final_timer(state.timings.final_solve);
   const Error_code final_status = final_solve(settings, state);
   if(final_status != OK) return final_status;
   state.distortion = mean_distortion(state.chart, state.x);
+  final_timer.stop();
+  Scoped_timer packing_timer(state.timings.packing);
   state.packing = pack_charts(state.chart, state.x, settings.packing);
+  packing_timer.stop();
   // never hand out a silently wrong map (checked in every build type)
   if(!state.x.allFinite() || number_of_flipped_faces(state.chart, state.x) > 0) return ERROR_NO_1_TO_1_MAPPING;
   if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),

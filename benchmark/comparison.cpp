@@ -1,0 +1,359 @@
+#include "comparison.h"
+
+#include "benchmark_mesh.h"
+#include "median.h"
+#include "mesh_list.h"
+#include "reference_tables.h"
+#include "table_output.h"
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cut_benchmark {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+namespace {
+
+// Targets, relative to the reference implementation's measured figures.
+const double ED_TOLERANCE = 0.03;   // E_d <= ref E_d + 0.03
+const double ES_FACTOR = 1.25;      // E_s <= 1.25 ref E_s + 0.05
+const double ES_TOLERANCE = 0.05;
+
+struct Run_result
+{
+  std::string status;          // "ok", an error name, or a failure to read
+  std::size_t faces = 0;
+  bool ran = false;            // the algorithm was called
+  bool ok = false;
+  double time = NaN;           // median wall time of the algorithm (s)
+  std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
+  double distortion = NaN, seam_length = NaN, coverage = NaN;
+  std::string note;
+};
+
+bool close(double a, double b, double rel = 1e-6)
+{
+  if(std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+  if(std::isinf(a) || std::isinf(b)) return a == b;
+  return std::abs(a - b) <= rel * std::max(1., std::max(std::abs(a), std::abs(b)));
+}
+
+template <typename NamedParameters>
+void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& out)
+{
+  auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:benchmark_seam", false).first;
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:benchmark_uv").first;
+
+  std::vector<double> times;
+  SMP::Cut_and_parameterize_result first;
+  bool varies = false;
+  for(int r = 0; r < repeat; ++r)
+  {
+    for(auto e : mesh.edges()) put(seam, e, false);
+    for(auto h : mesh.halfedges()) put(uv, h, Kernel::Point_2(0., 0.));
+
+    const auto start = std::chrono::steady_clock::now();
+    const SMP::Cut_and_parameterize_result res = SMP::cut_and_parameterize(mesh, seam, uv, np);
+    const auto stop = std::chrono::steady_clock::now();
+    times.push_back(std::chrono::duration<double>(stop - start).count());
+    out.ran = true;
+
+    if(r == 0) first = res;
+    else if(res.error != first.error || !close(res.distortion, first.distortion, 1e-9)
+            || !close(res.seam_length, first.seam_length, 1e-9))
+      varies = true;
+    if(res.error != SMP::OK) break; // a failing mesh fails again; do not time it N times
+  }
+
+  out.time = median(times);
+  out.status = SMP::error_name(first.error);
+  out.ok = first.ok();
+  if(varies) out.note = "results vary across runs (first run shown)";
+  if(!out.ok) return;
+
+  out.newton = first.newton_iterations;
+  out.charts = first.number_of_charts;
+  out.distortion = first.distortion;
+  out.seam_length = first.seam_length;
+  out.coverage = first.uv_coverage;
+  // The maps hold the last run; with deterministic runs it is the first one.
+  out.flipped = SMP::number_of_flipped_faces(mesh, uv);
+  out.crossings = SMP::number_of_border_crossings(mesh, uv);
+  if(!varies)
+  {
+    const double ed = SMP::distortion_energy(mesh, uv, SMP::parameters::uv_scale(first.uv_scale));
+    const double es = SMP::seam_length(mesh, seam);
+    if(!close(ed, first.distortion) || !close(es, first.seam_length))
+    {
+      std::ostringstream os;
+      os.precision(6);
+      os << "metrics on the output disagree with the result: E_d " << ed << ", E_s " << es;
+      out.note = os.str();
+    }
+  }
+}
+
+template <typename NamedParameters>
+Run_result benchmark_mesh(const Mesh_entry& entry, const Options& opt, const NamedParameters& np)
+{
+  Run_result out;
+  if(entry.file.empty()) { out.status = "NOT_FOUND"; return out; }
+  Mesh mesh;
+  try
+  {
+    if(!CGAL::IO::read_polygon_mesh(entry.file.string(), mesh, CGAL::parameters::verbose(false)))
+    {
+      out.status = "READ_FAILED";
+      return out;
+    }
+  }
+  catch(const std::exception& e)
+  {
+    out.status = "READ_FAILED";
+    out.note = e.what();
+    return out;
+  }
+  out.faces = mesh.number_of_faces();
+  if(opt.quick && out.faces >= QUICK_MAX_FACES) { out.status = "skipped"; return out; }
+  try
+  {
+    run_method(mesh, opt.repeat_count(), np, out);
+  }
+  catch(const std::exception& e)
+  {
+    out.ok = false;
+    out.status = "EXCEPTION";
+    out.note = e.what();
+  }
+  return out;
+}
+
+struct Row
+{
+  Mesh_entry mesh;
+  Run_result run;
+  const Reference_figures* measured = nullptr;
+  const Reference_figures* paper = nullptr;
+  int ed_pass = -1, es_pass = -1;  // -1: no reference to compare with
+  double speedup = NaN;
+};
+
+std::string pass_text(int p) { return p < 0 ? "-" : (p ? "yes" : "NO"); }
+
+} // namespace
+
+int run_comparison(const Options& opt)
+{
+  const References refs = read_references(opt.reference_dir);
+  std::vector<std::string> missing;
+  const std::vector<Mesh_entry> meshes = mesh_list(opt, refs, missing);
+  if(meshes.empty())
+  {
+    std::cerr << "error: no mesh to run (mesh folder: " << opt.mesh_dir.string() << ")\n";
+    return 2;
+  }
+
+  auto run = [&](const auto& np) {
+    std::vector<Row> rows;
+    for(const auto& m : meshes)
+    {
+      std::cerr << "[" << rows.size() + 1 << "/" << meshes.size() << "] " << m.name << " ... " << std::flush;
+      Row row;
+      row.mesh = m;
+      row.run = benchmark_mesh(m, opt, np);
+      std::cerr << row.run.status;
+      if(row.run.ran) std::cerr << " (" << time_text(row.run.time) << " s)";
+      std::cerr << "\n";
+      if(!row.run.note.empty()) std::cerr << "  note: " << row.run.note << "\n";
+      rows.push_back(std::move(row));
+    }
+    return rows;
+  };
+
+  namespace P = SMP::parameters;
+  std::vector<Row> rows;
+  const SMP::internal::cut::Joint_settings defaults;
+  rows = run(P::lambda(opt.lambda.value_or(defaults.lambda),
+             P::number_of_passes(opt.passes.value_or(defaults.passes),
+             P::bounding_box_aspect_ratio(opt.box))));
+
+  // --quick: meshes left out for their size.
+  std::vector<std::string> skipped_names;
+  for(const auto& row : rows)
+    if(row.run.status == "skipped") skipped_names.push_back(row.mesh.name);
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [](const Row& row) { return row.run.status == "skipped"; }),
+             rows.end());
+
+  // Comparisons.
+  for(auto& row : rows)
+  {
+    auto it = refs.measured.find(row.mesh.name);
+    if(it != refs.measured.end()) row.measured = &it->second;
+    auto jt = refs.paper.find(row.mesh.name);
+    if(jt != refs.paper.end()) row.paper = &jt->second;
+    if(row.measured)
+    {
+      const double ref_ed = row.measured->distortion, ref_es = row.measured->seam_length;
+      if(!std::isnan(ref_ed))
+        row.ed_pass = row.run.ok && row.run.distortion <= ref_ed + ED_TOLERANCE;
+      if(!std::isnan(ref_es))
+        row.es_pass = row.run.ok && row.run.seam_length <= ES_FACTOR * ref_es + ES_TOLERANCE;
+      if(row.run.ok && row.run.time > 0. && row.measured->time > 0.)
+        row.speedup = row.measured->time / row.run.time;
+    }
+  }
+
+  // Table.
+  const std::vector<Column> columns = {
+    {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"charts"}, {"flips"}, {"crossings"}, {"coverage"},
+    {"E_d"}, {"E_s"},
+    {"ref_t"}, {"ref_E_d"}, {"ref_E_s"}, {"T1_t"}, {"T1_E_d"}, {"T1_E_s"},
+    {"E_d_ok"}, {"E_s_ok"}, {"speedup"}, {"status", true}};
+  std::vector<std::vector<std::string>> cells;
+  for(const auto& row : rows)
+  {
+    const auto& r = row.run;
+    const auto* m = row.measured;
+    const auto* p = row.paper;
+    cells.push_back({
+      row.mesh.name,
+      r.faces ? std::to_string(r.faces) : "-",
+      r.ran ? time_text(r.time) : "-",
+      r.ok ? std::to_string(r.newton) : "-",
+      r.ok ? std::to_string(r.charts) : "-",
+      r.ok ? std::to_string(r.flipped) : "-",
+      r.ok ? std::to_string(r.crossings) : "-",
+      r.ok ? fixed(r.coverage, 3) : "-",
+      r.ok ? fixed(r.distortion, 4) : "-",
+      r.ok ? fixed(r.seam_length, 4) : "-",
+      m ? fixed(m->time, 3) : "-",
+      m ? fixed(m->distortion, 4) : "-",
+      m ? fixed(m->seam_length, 4) : "-",
+      p ? fixed(p->time, 2) : "-",
+      p ? fixed(p->distortion, 2) : "-",
+      p ? fixed(p->seam_length, 2) : "-",
+      pass_text(row.ed_pass),
+      pass_text(row.es_pass),
+      std::isnan(row.speedup) ? "-" : fixed(row.speedup, 2) + "x",
+      r.status});
+  }
+
+  std::cout << "cut_and_parameterize benchmark\n"
+            << "  meshes:     " << opt.mesh_dir.lexically_normal().string() << "\n"
+            << "  references: " << opt.reference_dir.lexically_normal().string() << "\n"
+            << "  parameters: lambda "
+            << (opt.lambda ? fixed(*opt.lambda, 3) : std::string("default")) << ", passes "
+            << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
+            << (opt.box > 0. ? ", box aspect ratio " + fixed(opt.box, 3) : std::string())
+            << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "")
+            << (opt.quick ? "; --quick (faces < 5000)" : "") << "\n\n";
+  print_table(std::cout, columns, cells);
+
+  // Summary.
+  std::size_t compared = 0, passed = 0, failed_runs = 0, with_flips = 0, with_crossings = 0;
+  double log_sum = 0.;
+  std::size_t n_speed = 0;
+  for(const auto& row : rows)
+  {
+    if(!row.run.ok) ++failed_runs;
+    if(row.run.ok && row.run.flipped > 0) ++with_flips;
+    if(row.run.ok && row.run.crossings > 0) ++with_crossings;
+    if(row.ed_pass >= 0 && row.es_pass >= 0)
+    {
+      ++compared;
+      if(row.ed_pass && row.es_pass) ++passed;
+    }
+    if(!std::isnan(row.speedup)) { log_sum += std::log(row.speedup); ++n_speed; }
+  }
+  std::cout << "\nE_d_ok: E_d <= ref_E_d + " << ED_TOLERANCE << "; E_s_ok: E_s <= " << ES_FACTOR
+            << " ref_E_s + " << ES_TOLERANCE << "; speedup = ref_t / time_s\n"
+            << "crossings: pairs of UV border segments that cross (overlaps; 0 for a valid atlas); "
+               "coverage: UV area / area of the packing square\n"
+            << "ref_*: reference implementation measured on this machine type "
+               "(uvat_reference_measured.csv); T1_*: the paper's Table 1 (paper_table1.csv)\n";
+  for(const auto& row : rows)
+    if(row.measured && row.measured->status != "ok" && !row.measured->status.empty())
+      std::cout << "note: " << row.mesh.name << ": reference status '" << row.measured->status << "'\n";
+  for(const auto& row : rows)
+    if(row.measured && row.measured->distortion > 100.)
+      std::cout << "note: " << row.mesh.name << ": reference E_d " << fixed(row.measured->distortion, 4)
+                << " is a failed result, so the E_d target is met trivially\n";
+  for(const auto& row : rows)
+    if(!row.run.note.empty()) std::cout << "note: " << row.mesh.name << ": " << row.run.note << "\n";
+  for(const auto& name : missing)
+    std::cout << "note: " << name << ": no mesh file in " << opt.mesh_dir.lexically_normal().string()
+              << (opt.meshes.empty() ? " (left out)" : "") << "\n";
+  if(!skipped_names.empty())
+  {
+    std::cout << "note: --quick left out (" << QUICK_MAX_FACES << " faces or more):";
+    for(const auto& name : skipped_names) std::cout << " " << name;
+    std::cout << "\n";
+  }
+  if(opt.meshes.empty())
+    for(const auto& model : refs.paper_without_file)
+      std::cout << "note: Table 1 model '" << model << "' has no mesh file (left out)\n";
+
+  std::cout << "\nSummary: " << passed << "/" << compared << " meshes pass both targets";
+  if(failed_runs) std::cout << " (" << failed_runs << " failed: error or unreadable mesh)";
+  if(with_flips) std::cout << "; " << with_flips << " with flipped faces";
+  if(with_crossings) std::cout << "; " << with_crossings << " with border crossings";
+  if(!skipped_names.empty()) std::cout << "; " << skipped_names.size() << " skipped (--quick)";
+  std::cout << "; geometric-mean speedup vs reference: ";
+  if(n_speed) std::cout << fixed(std::exp(log_sum / double(n_speed)), 2) << "x over " << n_speed << " meshes\n";
+  else std::cout << "-\n";
+
+  // CSV.
+  if(!opt.csv_file.empty())
+  {
+    std::ofstream csv(opt.csv_file);
+    if(!csv) { std::cerr << "error: cannot write " << opt.csv_file << "\n"; return 1; }
+    csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,crossings,coverage,E_d,E_s,"
+           "ref_time_s,ref_E_d,ref_E_s,paper_time_s,paper_E_d,paper_E_s,"
+           "E_d_pass,E_s_pass,speedup,status\n";
+    auto pass_csv = [](int p) { return p < 0 ? std::string() : std::to_string(p); };
+    for(const auto& row : rows)
+    {
+      const auto& r = row.run;
+      const auto* m = row.measured;
+      const auto* p = row.paper;
+      std::string file = row.mesh.file.empty() ? std::string()
+                                               : row.mesh.file.lexically_relative(opt.mesh_dir).generic_string();
+      csv << csv_field(row.mesh.name) << "," << csv_field(file) << ","
+          << (r.faces ? std::to_string(r.faces) : "") << ","
+          << (r.ran ? full(r.time) : "") << ","
+          << (r.ok ? std::to_string(r.newton) : "") << ","
+          << (r.ok ? std::to_string(r.charts) : "") << ","
+          << (r.ok ? std::to_string(r.flipped) : "") << ","
+          << (r.ok ? std::to_string(r.crossings) : "") << ","
+          << (r.ok ? full(r.coverage) : "") << ","
+          << (r.ok ? full(r.distortion) : "") << ","
+          << (r.ok ? full(r.seam_length) : "") << ","
+          << (m ? full(m->time) : "") << "," << (m ? full(m->distortion) : "") << ","
+          << (m ? full(m->seam_length) : "") << ","
+          << (p ? full(p->time) : "") << "," << (p ? full(p->distortion) : "") << ","
+          << (p ? full(p->seam_length) : "") << ","
+          << pass_csv(row.ed_pass) << "," << pass_csv(row.es_pass) << ","
+          << full(row.speedup) << "," << csv_field(r.status) << "\n";
+    }
+    std::cerr << "wrote " << opt.csv_file << "\n";
+  }
+  return 0;
+}
+
+} // namespace cut_benchmark

@@ -1,0 +1,57 @@
+// Command line of the benchmark: the comparison with the reference tables
+// (default mode) and the scaling run (--scaling).
+#ifndef CUT_PARAM_BENCHMARK_OPTIONS_H
+#define CUT_PARAM_BENCHMARK_OPTIONS_H
+
+#include <cstddef>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cut_benchmark {
+
+namespace fs = std::filesystem;
+
+/// --quick: only meshes with fewer faces.
+const std::size_t QUICK_MAX_FACES = 5000;
+/// --scaling: meshes up to this many faces are run --repeat times, bigger ones once.
+const std::size_t SCALING_REPEAT_MAX_FACES = 40000;
+/// --scaling: default time limit of one run, in seconds.
+const double SCALING_DEFAULT_TIME_LIMIT = 1800.;
+
+struct Options
+{
+  fs::path mesh_dir;
+  fs::path reference_dir;
+  std::vector<std::string> meshes;     // empty: the default list
+  std::optional<double> lambda;
+  std::optional<int> passes;
+  double box = 0.;                     // bounding_box_aspect_ratio (0: off)
+  std::optional<int> repeat;           // empty: the mode's default (repeat())
+  std::string csv_file;
+  bool quick = false;
+
+  // --scaling
+  bool scaling = false;
+  std::optional<std::size_t> max_faces; // empty: no limit
+  double time_limit = SCALING_DEFAULT_TIME_LIMIT;
+  std::string json_file;
+
+  /// Runs per mesh: --repeat, else 1 (3 with --scaling).
+  int repeat_count() const { return repeat.value_or(scaling ? 3 : 1); }
+};
+
+/// The project's root as seen when the benchmark was configured ("." if unknown).
+fs::path project_root();
+
+void print_usage(const char* program, std::ostream& os);
+
+/// Returns 0 to run, 1 to exit with success (--help), 2 on a usage error
+/// (reported on std::cerr).
+int parse_options(int argc, char** argv, Options& opt);
+
+} // namespace cut_benchmark
+
+#endif
