@@ -1,10 +1,12 @@
 #include "scaling.h"
 
 #include "benchmark_mesh.h"
-#include "child_process.h"
 #include "median.h"
 #include "midpoint_subdivision.h"
 #include "table_output.h"
+
+#include "child_process.h" // tools/
+#include "json_text.h"     // tools/
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/config.h>
@@ -27,11 +29,25 @@
 #include <type_traits>
 #include <vector>
 
+#include <sys/resource.h>
+
 namespace cut_benchmark {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
+using cut_tools::Child_result;
+using cut_tools::json_number;
+using cut_tools::json_string;
+using cut_tools::run_forked;
 
 namespace {
+
+// The maximum resident set size of this process so far, in KiB.
+long peak_resident_kib()
+{
+  rusage usage{};
+  if(getrusage(RUSAGE_SELF, &usage) != 0) return -1;
+  return usage.ru_maxrss; // KiB on Linux
+}
 
 const char* const BASE_MESH = "optcuts/bimba_i_f10000.obj"; // in the mesh folder
 const int SUBDIVISIONS = 3;                                 // 1-to-4 rounds: up to 64x its faces

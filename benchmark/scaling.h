@@ -5,7 +5,7 @@
 // 1, 2 and 3 rounds of 1-to-4 midpoint subdivision (4, 16, 64 times its
 // faces: the surface is unchanged, only finer), and CGAL's
 // meshes/refined_elephant.off. cut_and_parameterize() runs with its default
-// named parameters, each run in a child process of its own (child_process.h)
+// named parameters, each run in a child process of its own (tools/child_process.h)
 // that reads (and subdivides) the mesh, runs the method and sends back the
 // result's timings, counts and measures and its own peak memory. For every
 // mesh, one row: faces, total time and its phases

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ostream>
-#include <sstream>
 
 namespace cut_benchmark {
 
@@ -70,33 +69,6 @@ std::string csv_field(const std::string& s)
   std::string q = "\"";
   for(char c : s) { if(c == '"') q += '"'; q += c; }
   return q + "\"";
-}
-
-std::string json_string(const std::string& s)
-{
-  std::ostringstream out;
-  out << '"';
-  for(unsigned char c : s)
-  {
-    if(c == '"' || c == '\\') out << '\\' << c;
-    else if(c < 0x20)
-    {
-      static const char* hex = "0123456789abcdef";
-      out << "\\u00" << hex[c >> 4] << hex[c & 15];
-    }
-    else out << c;
-  }
-  out << '"';
-  return out.str();
-}
-
-std::string json_number(double x)
-{
-  if(!std::isfinite(x)) return "null";
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
 }
 
 } // namespace cut_benchmark

@@ -1,5 +1,5 @@
 // How the benchmark writes its results: numbers as text, an aligned text
-// table, and fields of CSV and JSON files (written by hand).
+// table and fields of CSV files (JSON literals: tools/json_text.h).
 #ifndef CUT_PARAM_BENCHMARK_TABLE_OUTPUT_H
 #define CUT_PARAM_BENCHMARK_TABLE_OUTPUT_H
 
@@ -31,12 +31,6 @@ void print_table(std::ostream& os, const std::vector<Column>& columns,
 
 /// A CSV field, quoted if it has to be.
 std::string csv_field(const std::string& s);
-
-/// A JSON string literal.
-std::string json_string(const std::string& s);
-
-/// A JSON number with 10 significant digits; JSON has no infinity or NaN: those become null.
-std::string json_number(double x);
 
 } // namespace cut_benchmark
 

@@ -22,13 +22,13 @@
 // crashed, hung, produced a NaN, a flipped face (FLIP), crossing UV borders
 // (OVERLAP) or a UV outside [0,1] (RANGE), or otherwise broke the contract
 // (undocumented error, inconsistent output), 0 otherwise.
+#include "child_process.h"
 #include "mesh_input.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -45,10 +45,7 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <poll.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -94,120 +91,9 @@ const char* const usage_text =
 
 // ---------------------------------------------------------------- children
 
-struct Child_result
-{
-  enum Kind { EXITED, SIGNALED, TIMED_OUT, NOT_STARTED } kind = NOT_STARTED;
-  int code = 0;        // exit status or signal number
-  std::string output;  // what a forked function wrote to its pipe
-  double seconds = 0.;
-};
-
-// Waits for `pid` for at most `timeout` seconds, reading `fd` (if >= 0) as
-// it goes; kills the child's process group on timeout.
-Child_result wait_for(pid_t pid, int fd, double timeout, Clock::time_point start)
-{
-  Child_result r;
-  char buffer[4096];
-  bool open = fd >= 0;
-  for(;;)
-  {
-    if(open)
-    {
-      pollfd p{fd, POLLIN, 0};
-      if(poll(&p, 1, 20) > 0)
-      {
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if(n > 0) r.output.append(buffer, std::size_t(n));
-        else if(n == 0 || errno != EINTR) open = false;
-      }
-    }
-    else
-      usleep(20000);
-    int status = 0;
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if(done == pid)
-    {
-      while(open)
-      {
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if(n > 0) r.output.append(buffer, std::size_t(n));
-        else open = false;
-      }
-      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      if(WIFSIGNALED(status)) { r.kind = Child_result::SIGNALED; r.code = WTERMSIG(status); }
-      else { r.kind = Child_result::EXITED; r.code = WEXITSTATUS(status); }
-      break;
-    }
-    if(std::chrono::duration<double>(Clock::now() - start).count() > timeout)
-    {
-      kill(-pid, SIGKILL);
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      r.kind = Child_result::TIMED_OUT;
-      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      break;
-    }
-  }
-  if(fd >= 0) close(fd);
-  return r;
-}
-
-// Runs `task` in a forked child; what it returns is sent back through a pipe.
-template <typename Task>
-Child_result run_forked(Task task, double timeout)
-{
-  int fds[2];
-  if(pipe(fds) != 0) return {};
-  std::cout.flush();
-  std::cerr.flush();
-  const auto start = Clock::now();
-  const pid_t pid = fork();
-  if(pid < 0) { close(fds[0]); close(fds[1]); return {}; }
-  if(pid == 0)
-  {
-    setpgid(0, 0);
-    close(fds[0]);
-    std::string message;
-    int code = 0;
-    try { message = task(); }
-    catch(const std::exception& e) { message = std::string("EXCEPTION ") + e.what(); code = 3; }
-    const char* p = message.data();
-    std::size_t left = message.size();
-    while(left > 0)
-    {
-      const ssize_t n = write(fds[1], p, left);
-      if(n <= 0) break;
-      p += n;
-      left -= std::size_t(n);
-    }
-    close(fds[1]);
-    _exit(code);
-  }
-  close(fds[1]);
-  return wait_for(pid, fds[0], timeout, start);
-}
-
-// Runs a program with its output in `log`.
-Child_result run_program(const std::vector<std::string>& args, const std::string& log, double timeout)
-{
-  std::cout.flush();
-  std::cerr.flush();
-  const auto start = Clock::now();
-  const pid_t pid = fork();
-  if(pid < 0) return {};
-  if(pid == 0)
-  {
-    setpgid(0, 0);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if(fd >= 0) { dup2(fd, 1); dup2(fd, 2); close(fd); }
-    std::vector<char*> argv;
-    for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return wait_for(pid, -1, timeout, start);
-}
+using cut_tools::Child_result;
+using cut_tools::run_forked;
+using cut_tools::run_program;
 
 std::string describe(const Child_result& r)
 {

@@ -4,6 +4,7 @@
 // coordinates and, on request, a JSON file of statistics and pictures
 // (tools/preview). By default the result is a texture atlas: charts free of
 // overlap, packed into the unit square with a padding in texels.
+#include "json_text.h"
 #include "mesh_input.h"
 
 #include <CGAL/Surface_mesh.h>
@@ -288,33 +289,8 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
 
 // ---------------------------------------------------------------- output
 
-std::string json_string(const std::string& s)
-{
-  std::ostringstream out;
-  out << '"';
-  for(unsigned char c : s)
-  {
-    if(c == '"' || c == '\\') out << '\\' << c;
-    else if(c < 0x20)
-    {
-      static const char* hex = "0123456789abcdef";
-      out << "\\u00" << hex[c >> 4] << hex[c & 15];
-    }
-    else out << c;
-  }
-  out << '"';
-  return out.str();
-}
-
-// JSON has no infinity or NaN: those become null.
-std::string json_number(double x)
-{
-  if(!std::isfinite(x)) return "null";
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
+using cut_tools::json_number;
+using cut_tools::json_string;
 
 struct Run_summary
 {
