@@ -188,9 +188,14 @@ int run_comparison(const Options& opt)
   namespace P = SMP::parameters;
   std::vector<Row> rows;
   const SMP::internal::cut::Joint_settings defaults;
+  // --box W:H asks for a tight box, as bounding_box_aspect_ratio does in the library
+  const double stiffness = opt.box_stiffness.value_or(opt.box ? SMP::tight_bounding_box_stiffness
+                                                               : defaults.bounding_box_stiffness);
   rows = run(P::lambda(opt.lambda.value_or(defaults.lambda),
              P::number_of_passes(opt.passes.value_or(defaults.passes),
-             P::bounding_box_aspect_ratio(opt.box))));
+             P::bounding_box_aspect_ratio(opt.box.value_or(defaults.bounding_box_aspect_ratio),
+             P::bounding_box_stiffness(stiffness,
+             P::global_injectivity(!opt.allow_overlaps))))));
 
   // --quick: meshes left out for their size.
   std::vector<std::string> skipped_names;
@@ -260,7 +265,9 @@ int run_comparison(const Options& opt)
             << "  parameters: lambda "
             << (opt.lambda ? fixed(*opt.lambda, 3) : std::string("default")) << ", passes "
             << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
-            << (opt.box > 0. ? ", box aspect ratio " + fixed(opt.box, 3) : std::string())
+            << ", box aspect ratio " << fixed(opt.box.value_or(defaults.bounding_box_aspect_ratio), 3)
+            << " stiffness " << fixed(stiffness, 1)
+            << (opt.allow_overlaps ? ", overlaps allowed" : "")
             << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "")
             << (opt.quick ? "; --quick (faces < 5000)" : "") << "\n\n";
   print_table(std::cout, columns, cells);

@@ -32,7 +32,11 @@ void print_usage(const char* program, std::ostream& os)
      << "                      default ../shared/reference relative to the project root\n"
      << "  --lambda X          seam cost lambda (library default if not given)\n"
      << "  --passes N          number of passes (library default if not given)\n"
-     << "  --box W:H           bounding-box term of aspect ratio W/H (default: off)\n"
+     << "  --box W:H           tight bounding box of aspect ratio W/H (default: the library's\n"
+     << "                      gentle square)\n"
+     << "  --box-stiffness S   how hard the box pulls, >= 0 (0: no box; library default if not given)\n"
+     << "  --allow-overlaps    global_injectivity(false): no scaffold (with --box-stiffness 0, the\n"
+     << "                      map as it was before the atlas work, only packed)\n"
      << "  --repeat N          runs per mesh; the time reported is their median (default 1;\n"
      << "                      with --scaling 3, for meshes up to " << SCALING_REPEAT_MAX_FACES
      << " faces)\n"
@@ -106,6 +110,15 @@ int parse_options(int argc, char** argv, Options& opt)
       opt.box = w / h;
       comparison_only.push_back(arg);
     }
+    else if(arg == "--box-stiffness")
+    {
+      double x;
+      if(!value(v)) return 2;
+      if(!parse_double(v, x) || !(x >= 0.) || !std::isfinite(x))
+      { std::cerr << "error: --box-stiffness: expected a number >= 0, got '" << v << "'\n"; return 2; }
+      opt.box_stiffness = x;
+      comparison_only.push_back(arg);
+    }
     else if(arg == "--passes")
     {
       int n;
@@ -113,6 +126,11 @@ int parse_options(int argc, char** argv, Options& opt)
       if(!parse_int(v, n) || n < 0)
       { std::cerr << "error: --passes: expected a non-negative integer, got '" << v << "'\n"; return 2; }
       opt.passes = n;
+      comparison_only.push_back(arg);
+    }
+    else if(arg == "--allow-overlaps")
+    {
+      opt.allow_overlaps = true;
       comparison_only.push_back(arg);
     }
     else if(arg == "--repeat")

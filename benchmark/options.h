@@ -28,7 +28,9 @@ struct Options
   std::vector<std::string> meshes;     // empty: the default list
   std::optional<double> lambda;
   std::optional<int> passes;
-  double box = 0.;                     // bounding_box_aspect_ratio (0: off)
+  std::optional<double> box;           // bounding_box_aspect_ratio (empty: the library's default box)
+  std::optional<double> box_stiffness; // bounding_box_stiffness (empty: the library's default)
+  bool allow_overlaps = false;         // global_injectivity(false)
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;

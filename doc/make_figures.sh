@@ -81,7 +81,10 @@ svg_to_png "$work/elephant.svg" "$fig/elephant_uv.png"
 # examples/texture_atlas.cpp): the charts packed into the unit square.
 unwrap bones bones
 svg_to_png "$work/bones.svg" "$fig/bones_atlas_uv.png"
-# One chart pulled into a 1:1 rectangle (compare with lion_head_uv.png).
+# One chart without a bounding box, and pulled tightly into a 1:1 rectangle
+# (compare with lion_head_uv.png: the default, a gentle square).
+unwrap lion-head lion_head_no_box --no-box
+svg_to_png "$work/lion_head_no_box.svg" "$fig/lion_head_no_box_uv.png"
 unwrap lion-head lion_head_box --box 1:1
 svg_to_png "$work/lion_head_box.svg" "$fig/lion_head_box_uv.png"
 

@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scaffold_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 
+#include <limits>
 #include <random>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -160,22 +161,39 @@ CUT_TEST(padding_and_texture_size_are_honoured)
 CUT_TEST(bounding_box_term_fills_the_square)
 {
   // a flat 4:1 rectangle: packed as it is (on the square's diagonal) it covers
-  // 4 / (5 / sqrt(2))² = 0.32 of the square at most; pulled into a 1:1 box it
-  // covers much more, still without flips or crossings
+  // 4 / (5 / sqrt(2))² = 0.32 of the square at most; the default gentle square
+  // box rounds it off a little, a tight 1:1 box (an explicit aspect ratio)
+  // much more, still without flips or crossings
   Surface_mesh mesh;
   build_mesh(grid_soup(24, 6, 4., 1.), mesh);
-  Cut_run<Surface_mesh> plain(mesh), boxed(mesh);
-  plain.run();
+  Cut_run<Surface_mesh> plain(mesh), gentle(mesh), boxed(mesh), stiff(mesh);
+  plain.run(P::bounding_box_stiffness(0.));
+  gentle.run();
   boxed.run(P::bounding_box_aspect_ratio(1.));
-  check_cut_result(mesh, plain);
-  check_cut_result(mesh, boxed);
+  stiff.run(P::bounding_box_aspect_ratio(1., P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness)));
+  for(const auto* run : {&plain, &gentle, &boxed, &stiff}) check_cut_result(mesh, *run);
   CHECK(plain.result.uv_coverage < 0.321);
-  CHECK_MSG(boxed.result.uv_coverage > plain.result.uv_coverage + 0.25,
-            "coverage " << plain.result.uv_coverage << " -> " << boxed.result.uv_coverage);
-  CHECK(boxed.result.distortion > plain.result.distortion); // the price of the box
-  // a wrong aspect ratio is refused
+  CHECK_MSG(gentle.result.uv_coverage > plain.result.uv_coverage + 0.01,
+            "coverage " << plain.result.uv_coverage << " -> " << gentle.result.uv_coverage);
+  CHECK_MSG(boxed.result.uv_coverage > gentle.result.uv_coverage + 0.2,
+            "coverage " << gentle.result.uv_coverage << " -> " << boxed.result.uv_coverage);
+  // the price of the box
+  CHECK(plain.result.distortion < gentle.result.distortion);
+  CHECK(gentle.result.distortion < boxed.result.distortion);
+  // an explicit stiffness wins over the tight default of an explicit ratio:
+  // the gentle square again, the same map
+  CHECK_EQ(stiff.result.uv_coverage, gentle.result.uv_coverage);
+  CHECK_EQ(stiff.result.distortion, gentle.result.distortion);
+  // ratio 0 turns the box off, as stiffness 0 does
+  Cut_run<Surface_mesh> off(mesh);
+  off.run(P::bounding_box_aspect_ratio(0.));
+  CHECK_EQ(off.result.distortion, plain.result.distortion);
+  // wrong values are refused
   Cut_run<Surface_mesh> bad(mesh);
   CHECK_EQ(bad.run(P::bounding_box_aspect_ratio(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  CHECK_EQ(bad.run(P::bounding_box_stiffness(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  CHECK_EQ(bad.run(P::bounding_box_stiffness(std::numeric_limits<double>::infinity())).error,
+           SMP::ERROR_WRONG_PARAMETER);
   CHECK_EQ(bad.run(P::padding(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
   CHECK_EQ(bad.run(P::texture_size(0)).error, SMP::ERROR_WRONG_PARAMETER);
 }

@@ -70,7 +70,9 @@ struct Options
   bool world_units = false;
   int texture_size = 1024;
   double padding = 2.;           // texels
-  double box_aspect_ratio = 0.;  // width / height; 0: no bounding-box term
+  double box_aspect_ratio = 1.;  // width / height of the bounding box
+  double box_stiffness = -1.;    // < 0: gentle (4) for the default square, tight (300) with --box
+  bool box_given = false;
   bool quiet = false;
 };
 
@@ -95,7 +97,10 @@ const char* const usage_text =
   "  --world-units           keep UVs in 3D units (charts still packed) instead of [0,1]\n"
   "  --texture-size N        texture width and height in texels, unit of --padding (default 1024)\n"
   "  --padding TEXELS        gap between charts and to the square's sides, >= 0 (default 2)\n"
-  "  --box W:H               pull each chart into a W:H rectangle (e.g. 2:1; default: off)\n"
+  "  --box W:H               pull each chart tightly into a W:H rectangle (e.g. 2:1); without\n"
+  "                          it, a gentle pull into a square rounds charts off\n"
+  "  --box-stiffness S       how hard the box pulls, >= 0 (default 4, or 300 with --box)\n"
+  "  --no-box                no bounding box at all (same as --box-stiffness 0)\n"
   "  --svg FILE              write the UV layout, colored by distortion, as SVG\n"
   "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
   "  --up AXIS               up axis of the mesh for --png: x, y, z, -z, ... (default y)\n"
@@ -183,7 +188,19 @@ bool parse_arguments(int argc, char** argv, Options& options)
       if(!(options.padding >= 0.))
         throw Failure("invalid value '" + text + "' for --padding (expected a number >= 0, in texels)");
     }
-    else if(arg == "--box") options.box_aspect_ratio = parse_aspect_ratio(arg, next_value());
+    else if(arg == "--box")
+    {
+      options.box_aspect_ratio = parse_aspect_ratio(arg, next_value());
+      options.box_given = true;
+    }
+    else if(arg == "--box-stiffness")
+    {
+      const std::string text = next_value();
+      options.box_stiffness = parse_number(arg, text);
+      if(!(options.box_stiffness >= 0.) || !std::isfinite(options.box_stiffness))
+        throw Failure("invalid value '" + text + "' for --box-stiffness (expected a number >= 0)");
+    }
+    else if(arg == "--no-box") options.box_stiffness = 0.;
     else if(arg == "--svg") options.svg = next_value();
     else if(arg == "--png") options.png = next_value();
     else if(arg == "--up")
@@ -200,6 +217,9 @@ bool parse_arguments(int argc, char** argv, Options& options)
     else
       options.input = arg;
   }
+  if(options.box_stiffness < 0.)
+    options.box_stiffness = options.box_given ? SMP::tight_bounding_box_stiffness
+                                              : SMP::gentle_bounding_box_stiffness;
   if(!(options.lambda > 0.)) throw Failure("--lambda must be positive");
   if(!(options.epsilon_start > 0.) || !(options.epsilon_end > 0.))
     throw Failure("--epsilon-start and --epsilon-end must be positive");
@@ -453,8 +473,9 @@ void run(const char* argv0, Options& options, Run_summary& summary)
                   P::texture_size(options.texture_size,
                   P::padding(options.padding,
                   P::bounding_box_aspect_ratio(options.box_aspect_ratio,
+                  P::bounding_box_stiffness(options.box_stiffness,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);

@@ -98,6 +98,11 @@ Joint_settings joint_settings(const NamedParameters& np)
                                              s.max_newton_iterations);
   s.bounding_box_aspect_ratio = choose_parameter(get_parameter(np, internal_np::bounding_box_aspect_ratio),
                                                  s.bounding_box_aspect_ratio);
+  // a box asked for by its aspect ratio is filled tightly; the default one is gentle
+  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::bounding_box_aspect_ratio_t>::value)
+    s.bounding_box_stiffness = tight_bounding_box_stiffness;
+  s.bounding_box_stiffness = choose_parameter(get_parameter(np, internal_np::bounding_box_stiffness),
+                                              s.bounding_box_stiffness);
   s.global_injectivity = choose_parameter(get_parameter(np, internal_np::global_injectivity), s.global_injectivity);
   s.packing.texture_size = choose_parameter(get_parameter(np, internal_np::texture_size), s.packing.texture_size);
   s.packing.padding = choose_parameter(get_parameter(np, internal_np::padding), s.packing.padding);
@@ -236,9 +241,17 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     sides; default 2
 ///   - `world_units`: bool, keep the 3D scale (charts still packed apart) instead
 ///     of scaling the atlas into the unit square; default false
-///   - `bounding_box_aspect_ratio`: double ≥ 0, if positive the final solve pulls
-///     each chart into a rectangle of this width / height, so that it fills the
-///     atlas better at some cost in distortion; default 0 (off)
+///   - `bounding_box_aspect_ratio`: double ≥ 0, the final solve pulls each
+///     chart into a rectangle of this width / height (of the chart's area), so
+///     that it fills the atlas better at some cost in distortion; 0 turns the
+///     box off. Default: a square with a gentle pull (stiffness 4); given
+///     explicitly, the box is filled tightly (stiffness 300) unless
+///     `bounding_box_stiffness` says otherwise
+///   - `bounding_box_stiffness`: double ≥ 0, how hard the box pulls; 0 turns
+///     the box off. Measured on the 20 benchmark meshes with a square: 4
+///     raises the unit-square coverage from 0.525 to 0.603 (mean) and from
+///     0.334 to 0.462 (min) at E_d +0.020 (mean); 300 reaches 0.77 at E_d
+///     +0.23. Default 4, or 300 when `bounding_box_aspect_ratio` is given
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
 ///

@@ -11,6 +11,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_BOUNDING_BOX_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_BOUNDING_BOX_TERM_H
 
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
 
@@ -47,10 +48,8 @@ public:
   static constexpr double target_fill = 1.;
 
   /// `aspect_ratio`: width / height of every chart's rectangle (> 0);
-  /// `stiffness`: weight of the mean squared distance outside. 300 measured on
-  /// venus, hand1, bimba, cat, bunnyhead with 1:1: coverage 0.64-0.81 (mean
-  /// 0.74), E_d +0.10 to +0.47; 100 gave mean 0.71, 1000 stalled on bimba.
-  Bounding_box_term(const Chart_mesh& mesh, double aspect_ratio, double stiffness = 300.)
+  /// `stiffness`: weight of the mean squared distance outside (> 0).
+  Bounding_box_term(const Chart_mesh& mesh, double aspect_ratio, double stiffness = tight_bounding_box_stiffness)
   {
     int charts = 0;
     const std::vector<int> chart = chart_of_faces(mesh, charts);

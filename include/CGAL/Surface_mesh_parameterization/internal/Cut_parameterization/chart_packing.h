@@ -255,7 +255,8 @@ inline bool pack_boxes(const std::vector<Vector2>& size, const std::vector<int>&
 /// orientations (signed UV areas) are kept. The charts' bounding rectangles
 /// lie in the square [0, result.side]² (the unit square, or in world units
 /// the same layout with scale 1), at least `padding * side / texture_size`
-/// from each other and from the square's sides. If even charts shrunk to
+/// (and never less than 1e-6 side, so that charts never touch) from each
+/// other and from the square's sides. If even charts shrunk to
 /// points could not be that far apart (the padding times about sqrt(number of
 /// charts) exceeds the texture size), the padding is lowered to half of the
 /// largest feasible value, so the layout is always valid and finite.
@@ -321,8 +322,11 @@ inline Packing_result pack_charts(const Chart_mesh& mesh, UV_vector& x,
   // [0, 1 - pad]²; the chart sits at pad from its box's lower corner. A k × k
   // grid of cells 'cell' always fits when pad < cell; else lower the padding.
   const int k = int(std::ceil(std::sqrt(double(n))));
+  // never 0: with padding 0 two charts still do not touch (their boxes at least
+  // min_gap apart, a thousandth of a texel at 1024 texels)
+  const double min_gap = 1e-6;
   double pad = std::isfinite(settings.padding) && settings.texture_size > 0
-                 ? (std::max)(0., settings.padding / settings.texture_size) : 0.;
+                 ? (std::max)(min_gap, settings.padding / settings.texture_size) : min_gap;
   if(pad * (k + 1) >= 1.) pad = 0.5 / (k + 1);
   const double room = 1. - pad, cell = room / k;
   double low = (cell - pad) / max_side * (1. - 1e-12);

@@ -49,7 +49,11 @@ struct Joint_settings
   double final_tolerance = 1e-7;       // final solve on the cut mesh
   // Atlas: no chart overlaps itself (final_solve()), then packing into the unit square.
   bool global_injectivity = true;
-  double bounding_box_aspect_ratio = 0.; // > 0: the final solve pulls each chart into such a rectangle
+  // Bounding box: the final solve pulls each chart into a rectangle of this
+  // width / height, with this stiffness (0: off); the default is a gentle
+  // square (see gentle_bounding_box_stiffness for the measures).
+  double bounding_box_aspect_ratio = 1.;
+  double bounding_box_stiffness = gentle_bounding_box_stiffness;
   Packing_settings packing;
   std::function<bool(const Joint_progress&)> progress; // false: cancel
 
@@ -59,6 +63,7 @@ struct Joint_settings
         && iterations_per_epsilon >= 1 && gamma > 0. && passes >= 0 && max_newton_iterations >= 1
         && minimum_relative_cut_length >= 0. && minimum_relative_cut_length <= 1.
         && bounding_box_aspect_ratio >= 0. && std::isfinite(bounding_box_aspect_ratio)
+        && bounding_box_stiffness >= 0. && std::isfinite(bounding_box_stiffness)
         && packing.texture_size >= 1 && packing.padding >= 0. && std::isfinite(packing.padding);
   }
 
@@ -172,36 +177,55 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 /// alternation. With global injectivity, if a chart's border then crosses
 /// itself, the solve is redone with the scaffold, which keeps borders from
 /// crossing, from a Tutte embedding (whose border is convex) of each chart
-/// that crossed; the other charts start from where they are. The alternation's map is no start for the scaffold: its new cuts
-/// are slits of zero width, and a scaffold built in a slit opened just a
-/// little holds it almost closed (measured: venus E_d 4.77 from there, 4.37
-/// from Tutte; hand1 7.5 and 4.58).
+/// that crossed; the other charts start from where they are. The alternation's
+/// map is no start for the scaffold: its new cuts are slits of zero width,
+/// and a scaffold built in a slit opened just a little holds it almost closed
+/// (measured: venus E_d 4.77 from there, 4.37 from Tutte; hand1 7.5 and 4.58).
+///
+/// The bounding box, if any, comes last, from the converged map without it:
+/// pulled by the box from the alternation's map, a chart crossed itself more
+/// often (bunny, tooth), and every crossing costs a scaffold solve from Tutte.
+/// If the box makes a border cross, its solve is redone with the scaffold
+/// from the crossing-free map without box (slits open by then).
 inline Error_code final_solve(const Joint_settings& settings, Joint_state& state)
 {
   const std::vector<double> ones(state.chart.number_of_faces(), 1.);
-  auto solve = [&](bool injective) {
-    Distortion_minimizer minimizer(state.chart, ones, injective, settings.bounding_box_aspect_ratio);
+  const bool box = settings.bounding_box_aspect_ratio > 0. && settings.bounding_box_stiffness > 0.;
+  auto solve = [&](bool injective, bool with_box) {
+    Distortion_minimizer minimizer(state.chart, ones, injective, with_box ? settings.bounding_box_aspect_ratio : 0.,
+                                   settings.bounding_box_stiffness);
     const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, settings.final_tolerance);
     state.newton_iterations += report.iterations;
     state.factorizations += report.factorizations;
     return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   };
-  const Error_code status = solve(false);
-  if(status != OK || !settings.global_injectivity) return status;
-  const std::vector<char> crossing = Scaffold_term(state.chart).charts_with_crossing(state.x);
-  if(std::find(crossing.begin(), crossing.end(), 1) == crossing.end()) return OK;
-  // only the charts that overlap themselves start again, from their Tutte map
-  UV_vector tutte;
-  const Embedding_status embedding = disk_charts_embedding(state.chart, tutte);
-  if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
-  if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
-  int charts = 0;
-  const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
-  for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
-    if(crossing[chart_of_face[f]])
-      for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
-  return solve(true);
+  const Error_code status = solve(false, false);
+  if(status != OK) return status;
+  if(settings.global_injectivity)
+  {
+    const std::vector<char> crossing = Scaffold_term(state.chart).charts_with_crossing(state.x);
+    if(std::find(crossing.begin(), crossing.end(), 1) != crossing.end())
+    {
+      // only the charts that overlap themselves start again, from their Tutte map
+      UV_vector tutte;
+      const Embedding_status embedding = disk_charts_embedding(state.chart, tutte);
+      if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
+      if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
+      int charts = 0;
+      const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
+      for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
+        if(crossing[chart_of_face[f]])
+          for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
+      return solve(true, box);
+    }
+  }
+  if(!box) return OK;
+  const UV_vector without_box = state.x;
+  const Error_code boxed = solve(false, true);
+  if(boxed != OK || !settings.global_injectivity || !Scaffold_term(state.chart).has_crossing(state.x)) return boxed;
+  state.x = without_box;
+  return solve(true, true);
 }
 
 /// The whole method from `state.is_cut` (seams given by the user), first

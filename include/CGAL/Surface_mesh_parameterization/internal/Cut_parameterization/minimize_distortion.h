@@ -19,8 +19,8 @@ namespace cut {
 /// factorization is reused by every call to minimize(); weights may change.
 /// With `injective`, a scaffold keeps every chart free of self-overlap: x
 /// must then have no crossing border when minimize() is called. With a
-/// positive `box_aspect_ratio`, a bounding-box term pulls each chart into a
-/// rectangle of that width / height.
+/// positive `box_aspect_ratio` and `box_stiffness`, a bounding-box term pulls
+/// each chart into a rectangle of that width / height.
 class Distortion_minimizer
 {
   std::vector<double> weights_;
@@ -39,10 +39,11 @@ class Distortion_minimizer
 
 public:
   Distortion_minimizer(const Chart_mesh& mesh, std::vector<double> weights, bool injective = false,
-                       double box_aspect_ratio = 0.)
+                       double box_aspect_ratio = 0., double box_stiffness = 0.)
     : weights_(std::move(weights)), term_(mesh, weights_),
       scaffold_(injective ? std::make_unique<Scaffold_term>(mesh) : nullptr),
-      box_(box_aspect_ratio > 0. ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio) : nullptr),
+      box_(box_aspect_ratio > 0. && box_stiffness > 0.
+             ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio, box_stiffness) : nullptr),
       solver_(terms(), 2 * mesh.number_of_vertices)
   {}
 
