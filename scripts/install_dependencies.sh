@@ -3,7 +3,7 @@
 # Used by setup.sh and test.sh; safe to run again (does nothing then).
 set -euo pipefail
 
-packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libtbb-dev
+packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libmetis-dev libtbb-dev
           libcgal-demo libstb-dev doxygen)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then

@@ -1,12 +1,15 @@
 // Tutte initialization (internal tutte_embedding) and the distortion
 // optimizer (symmetric_dirichlet_parameterize, internal Distortion_minimizer)
 // on generated disks: no flipped face ever, energy strictly below Tutte's,
-// developable patches reach E_d = 4, results do not depend on the scale.
+// developable patches reach E_d = 4, results do not depend on the scale;
+// the sparse Cholesky solver on systems below and above its METIS threshold.
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
 
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -377,6 +380,46 @@ CUT_TYPED_TEST(vertex_point_map_is_used, Mesh_types)
   auto plain_uv = vertex_uv_map(mesh);
   REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, plain_uv), SMP::OK);
   CHECK(std::abs(get(plain_uv, vertex_of[1]).x() - get(uv, vertex_of[1]).x()) > 1e-3);
+}
+
+CUT_TEST(sparse_cholesky_solves_large_systems)
+{
+  // a screened grid Laplacian just above and below metis_threshold: the
+  // solver (METIS-ordered LLT above the threshold when built with METIS,
+  // AMD-ordered LDLT otherwise) gives the solution of Eigen's AMD LDLT, with a
+  // tiny residual, and refactors a matrix of the same pattern
+  for(const int side : {120, int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::metis_threshold)))) + 1})
+  {
+    Scoped_context ctx("grid side " + std::to_string(side));
+    const int n = side * side;
+    std::vector<Eigen::Triplet<double>> triplets;
+    for(int i = 0; i < side; ++i)
+      for(int j = 0; j < side; ++j)
+      {
+        const int k = i * side + j;
+        triplets.emplace_back(k, k, 4.001);
+        if(i > 0) triplets.emplace_back(k, k - side, -1.);
+        if(j > 0) triplets.emplace_back(k, k - 1, -1.);
+      }
+    ic::Sparse_matrix A(n, n);
+    A.setFromTriplets(triplets.begin(), triplets.end()); // lower triangle only
+    Eigen::VectorXd b(n);
+    for(int k = 0; k < n; ++k) b[k] = std::sin(0.37 * k) + 0.1 * (k % 7);
+    ic::Sparse_cholesky solver;
+    solver.analyze(A);
+    Eigen::VectorXd x;
+    REQUIRE(solver.factorize(A));
+    REQUIRE(solver.solve(b, x));
+    const Eigen::VectorXd residual = A.selfadjointView<Eigen::Lower>() * x - b;
+    CHECK_MSG(residual.norm() <= 1e-12 * b.norm(), "relative residual " << residual.norm() / b.norm());
+    Eigen::SimplicialLDLT<ic::Sparse_matrix, Eigen::Lower> reference(A);
+    CHECK_MSG((x - reference.solve(b)).norm() <= 1e-10 * x.norm(), "differs from AMD LDLT");
+    // same pattern, new values: factorize again without a new analysis
+    ic::Sparse_matrix B = 2. * A;
+    REQUIRE(solver.factorize(B));
+    REQUIRE(solver.solve(b, x));
+    CHECK_MSG((2. * x - reference.solve(b)).norm() <= 1e-10 * x.norm(), "refactorization differs");
+  }
 }
 
 CUT_TEST_MAIN()
