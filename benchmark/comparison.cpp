@@ -19,6 +19,7 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -191,11 +192,14 @@ int run_comparison(const Options& opt)
   // --box W:H asks for a tight box, as bounding_box_aspect_ratio does in the library
   const double stiffness = opt.box_stiffness.value_or(opt.box ? SMP::tight_bounding_box_stiffness
                                                                : defaults.bounding_box_stiffness);
+  const double budget = opt.box || opt.box_stiffness ? std::numeric_limits<double>::infinity()
+                                                     : defaults.bounding_box_distortion_budget;
   rows = run(P::lambda(opt.lambda.value_or(defaults.lambda),
              P::number_of_passes(opt.passes.value_or(defaults.passes),
              P::bounding_box_aspect_ratio(opt.box.value_or(defaults.bounding_box_aspect_ratio),
              P::bounding_box_stiffness(stiffness,
-             P::global_injectivity(!opt.allow_overlaps))))));
+             P::bounding_box_distortion_budget(budget,
+             P::global_injectivity(!opt.allow_overlaps)))))));
 
   // --quick: meshes left out for their size.
   std::vector<std::string> skipped_names;

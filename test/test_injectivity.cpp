@@ -161,14 +161,16 @@ CUT_TEST(padding_and_texture_size_are_honoured)
 CUT_TEST(bounding_box_term_fills_the_square)
 {
   // a flat 4:1 rectangle: packed as it is (on the square's diagonal) it covers
-  // 4 / (5 / sqrt(2))² = 0.32 of the square at most; the default gentle square
-  // box rounds it off a little, a tight 1:1 box (an explicit aspect ratio)
-  // much more, still without flips or crossings
+  // 4 / (5 / sqrt(2))² = 0.32 of the square at most; the gentle square box
+  // rounds it off a little, a tight 1:1 box (an explicit aspect ratio) much
+  // more, still without flips or crossings. (By default the gentle box would
+  // cost this strip more than its distortion budget and be dropped: see the
+  // next test; an explicit stiffness keeps it.)
   Surface_mesh mesh;
   build_mesh(grid_soup(24, 6, 4., 1.), mesh);
   Cut_run<Surface_mesh> plain(mesh), gentle(mesh), boxed(mesh), stiff(mesh);
   plain.run(P::bounding_box_stiffness(0.));
-  gentle.run();
+  gentle.run(P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness));
   boxed.run(P::bounding_box_aspect_ratio(1.));
   stiff.run(P::bounding_box_aspect_ratio(1., P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness)));
   for(const auto* run : {&plain, &gentle, &boxed, &stiff}) check_cut_result(mesh, *run);
@@ -196,6 +198,37 @@ CUT_TEST(bounding_box_term_fills_the_square)
            SMP::ERROR_WRONG_PARAMETER);
   CHECK_EQ(bad.run(P::padding(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
   CHECK_EQ(bad.run(P::texture_size(0)).error, SMP::ERROR_WRONG_PARAMETER);
+}
+
+CUT_TEST(bounding_box_stays_within_its_distortion_budget)
+{
+  // the flat 4:1 rectangle again: without box it maps isometrically; the
+  // gentle square box costs it more than 0.01 of E_d, so a budget of 0.01
+  // weakens the box until it costs less (or drops it)
+  Surface_mesh mesh;
+  build_mesh(grid_soup(24, 6, 4., 1.), mesh);
+  Cut_run<Surface_mesh> plain(mesh), capped(mesh), free_box(mesh);
+  plain.run(P::bounding_box_stiffness(0.));
+  capped.run(P::bounding_box_distortion_budget(0.01));
+  free_box.run(P::bounding_box_distortion_budget(std::numeric_limits<double>::infinity()));
+  for(const auto* run : {&plain, &capped, &free_box}) check_cut_result(mesh, *run);
+  CHECK_MSG(free_box.result.distortion > plain.result.distortion + 0.01,
+            "E_d " << plain.result.distortion << " -> " << free_box.result.distortion);
+  CHECK_MSG(capped.result.distortion <= plain.result.distortion + 0.01 + 1e-6,
+            "E_d " << plain.result.distortion << " -> " << capped.result.distortion);
+  CHECK(capped.result.distortion < free_box.result.distortion);
+  // the default budget holds too (here the box is dropped)
+  Cut_run<Surface_mesh> gentle(mesh);
+  gentle.run();
+  check_cut_result(mesh, gentle);
+  CHECK(gentle.result.distortion <= plain.result.distortion + SMP::gentle_bounding_box_distortion_budget + 1e-6);
+  // an explicit stiffness lifts the budget: the box is kept as asked
+  Cut_run<Surface_mesh> asked(mesh);
+  asked.run(P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness));
+  CHECK_EQ(asked.result.distortion, free_box.result.distortion);
+  Cut_run<Surface_mesh> bad(mesh);
+  CHECK_EQ(bad.run(P::bounding_box_distortion_budget(-0.1)).error, SMP::ERROR_WRONG_PARAMETER);
+  CHECK_EQ(bad.run(P::bounding_box_distortion_budget(std::nan(""))).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
 CUT_TEST(scaffold_gradient_matches_finite_differences)

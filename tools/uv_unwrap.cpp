@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -71,8 +72,9 @@ struct Options
   int texture_size = 1024;
   double padding = 2.;           // texels
   double box_aspect_ratio = 1.;  // width / height of the bounding box
-  double box_stiffness = -1.;    // < 0: gentle (4) for the default square, tight (300) with --box
+  double box_stiffness = -1.;    // < 0: gentle (5) for the default square, tight (300) with --box
   bool box_given = false;
+  double box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
   bool quiet = false;
 };
 
@@ -99,7 +101,9 @@ const char* const usage_text =
   "  --padding TEXELS        gap between charts and to the square's sides, >= 0 (default 2)\n"
   "  --box W:H               pull each chart tightly into a W:H rectangle (e.g. 2:1); without\n"
   "                          it, a gentle pull into a square rounds charts off\n"
-  "  --box-stiffness S       how hard the box pulls, >= 0 (default 4, or 300 with --box)\n"
+  "  --box-stiffness S       how hard the box pulls, >= 0 (default 5, or 300 with --box);\n"
+  "                          given, the box is kept whatever it costs (the default box is\n"
+  "                          weakened, then dropped, where it raises E_d by more than 0.045)\n"
   "  --no-box                no bounding box at all (same as --box-stiffness 0)\n"
   "  --svg FILE              write the UV layout, colored by distortion, as SVG\n"
   "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
@@ -217,6 +221,9 @@ bool parse_arguments(int argc, char** argv, Options& options)
     else
       options.input = arg;
   }
+  // as in the library: a box asked for is kept whatever it costs, the default one within a budget
+  if(options.box_given || options.box_stiffness >= 0.)
+    options.box_distortion_budget = std::numeric_limits<double>::infinity();
   if(options.box_stiffness < 0.)
     options.box_stiffness = options.box_given ? SMP::tight_bounding_box_stiffness
                                               : SMP::gentle_bounding_box_stiffness;
@@ -327,6 +334,7 @@ struct Run_summary
 
 void write_stats(const std::string& filename, const Run_summary& s)
 {
+  const SMP::Cut_and_parameterize_timings& t = s.result.timings;
   std::ofstream out(filename);
   out << "{\n"
       << "  \"input\": " << json_string(s.input) << ",\n"
@@ -350,7 +358,13 @@ void write_stats(const std::string& filename, const Run_summary& s)
       << "  \"uv_scale\": " << json_number(s.result.uv_scale) << ",\n"
       << "  \"uv_in_unit_square\": " << (s.uv_in_unit_square ? "true" : "false") << ",\n"
       << "  \"time_seconds\": " << json_number(s.time_seconds) << ",\n"
-      << "  \"newton_iterations\": " << s.result.newton_iterations << "\n"
+      << "  \"newton_iterations\": " << s.result.newton_iterations << ",\n"
+      << "  \"factorizations\": " << s.result.number_of_factorizations << ",\n"
+      << "  \"timings\": {\"initialization\": " << json_number(t.initialization)
+      << ", \"u_steps\": " << json_number(t.u_steps) << ", \"v_steps\": " << json_number(t.v_steps)
+      << ", \"cut_extraction\": " << json_number(t.cut_extraction)
+      << ", \"final_solve\": " << json_number(t.final_solve) << ", \"packing\": " << json_number(t.packing)
+      << ", \"total\": " << json_number(t.total) << "}\n"
       << "}\n";
   out.close();
   if(!out) throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
@@ -474,8 +488,9 @@ void run(const char* argv0, Options& options, Run_summary& summary)
                   P::padding(options.padding,
                   P::bounding_box_aspect_ratio(options.box_aspect_ratio,
                   P::bounding_box_stiffness(options.box_stiffness,
+                  P::bounding_box_distortion_budget(options.box_distortion_budget,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);

@@ -1,5 +1,6 @@
 // Projected Newton minimization of a sum of energy terms over UV coordinates.
-// The sparsity pattern and its symbolic factorization are set up once; each
+// The sparsity pattern and its symbolic factorization are set up at the
+// first minimization and again only when a term changes its elements; each
 // iteration assembles, factorizes, solves, caps the step so that no term
 // becomes inadmissible (no face flips), then backtracks (Armijo).
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
@@ -49,6 +50,7 @@ class Projected_newton_solver
   Hessian_assembler hessian_;
   Sparse_cholesky cholesky_;
   int dimension_;
+  bool pattern_built_ = false;
 
   void build_pattern()
   {
@@ -56,6 +58,7 @@ class Projected_newton_solver
     for(Energy_term* term : terms_) term->declare_elements(hessian_);
     hessian_.finalize(dimension_);
     cholesky_.analyze(hessian_.matrix());
+    pattern_built_ = true;
   }
 
   /// Lets every term update itself at x; true if an energy value changed.
@@ -68,17 +71,16 @@ class Projected_newton_solver
       values = values || u != Energy_term::Update::NONE;
       elements = elements || u == Energy_term::Update::ELEMENTS;
     }
-    if(elements) build_pattern();
+    if(elements || !pattern_built_) build_pattern();
     return values;
   }
 
 public:
-  /// Registers the terms and builds the pattern for `dimension` unknowns.
+  /// Registers the terms for `dimension` unknowns; the pattern is built by
+  /// the first minimize(), once the terms have seen x.
   Projected_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
     : terms_(terms), dimension_(dimension)
-  {
-    build_pattern();
-  }
+  {}
 
   double energy(const UV_vector& x) const
   {
