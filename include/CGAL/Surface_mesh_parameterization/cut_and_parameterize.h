@@ -8,8 +8,8 @@
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
 
-#include <limits>
 #include <functional>
+#include <limits>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -255,10 +255,10 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     distortion budget; given explicitly, the box is filled tightly
 ///     (stiffness 300) unless `bounding_box_stiffness` says otherwise
 ///   - `bounding_box_stiffness`: double ≥ 0, how hard the box pulls; 0 turns
-///     the box off. Measured on the 20 benchmark meshes with a square: the
-///     default raises the unit-square coverage from 0.525 to 0.608 (mean) and
-///     from 0.334 to 0.478 (min) at E_d +0.022 (mean); 300 reaches 0.77 at
-///     E_d +0.23. Default 5, or 300 when `bounding_box_aspect_ratio` is given
+///     the box off. Measured on the 21 meshes of the benchmark with a square:
+///     the default raises the unit-square coverage from 0.535 to 0.610 (mean)
+///     and from 0.354 to 0.471 (min) at E_d +0.023 (mean, +0.044 at most);
+///     300 reaches 0.77 at E_d +0.24. Default 5, or 300 when `bounding_box_aspect_ratio` is given
 ///   - `bounding_box_distortion_budget`: double ≥ 0 (may be infinite), the
 ///     largest increase of E_d that the box may cost over the final solve
 ///     without it; where it costs more, its stiffness is multiplied by 0.7

@@ -224,7 +224,7 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
   Error_code status = solve(false, 0.);
   if(status != OK) return status;
   const double unboxed = mean_distortion(state.chart, state.x);
-  bool scaffold_only = false; // a chart crossed itself: every later solve keeps the scaffold
+  bool crossed = false; // a chart crossed itself: every later solve keeps the scaffold
   if(settings.global_injectivity)
   {
     const std::vector<char> crossing = Scaffold_term(state.chart).charts_with_crossing(state.x);
@@ -241,18 +241,18 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
       for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
         if(crossing[chart_of_face[f]])
           for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
-      scaffold_only = true;
+      crossed = true;
       status = solve(true, stiffness);
     }
   }
-  if(!scaffold_only && stiffness > 0.) status = solve_keeping_borders(stiffness);
+  if(!crossed && stiffness > 0.) status = solve_keeping_borders(stiffness);
   // the box's cost in distortion, over the map without box, stays within the budget
   for(int weaker = 0; status == OK && stiffness > 0. && weaker < 3
                       && mean_distortion(state.chart, state.x) > unboxed + settings.bounding_box_distortion_budget;
       ++weaker)
   {
     stiffness = weaker < 2 ? 0.7 * stiffness : 0.;
-    status = scaffold_only ? solve(true, stiffness) : solve_keeping_borders(stiffness);
+    status = crossed ? solve(true, stiffness) : solve_keeping_borders(stiffness);
   }
   return status;
 }
