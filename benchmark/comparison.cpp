@@ -199,7 +199,8 @@ int run_comparison(const Options& opt)
              P::bounding_box_aspect_ratio(opt.box.value_or(defaults.bounding_box_aspect_ratio),
              P::bounding_box_stiffness(stiffness,
              P::bounding_box_distortion_budget(budget,
-             P::global_injectivity(!opt.allow_overlaps)))))));
+             P::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces),
+             P::global_injectivity(!opt.allow_overlaps))))))));
 
   // --quick: meshes left out for their size.
   std::vector<std::string> skipped_names;

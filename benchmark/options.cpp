@@ -35,6 +35,8 @@ void print_usage(const char* program, std::ostream& os)
      << "  --box W:H           tight bounding box of aspect ratio W/H (default: the library's\n"
      << "                      gentle square)\n"
      << "  --box-stiffness S   how hard the box pulls, >= 0 (0: no box; library default if not given)\n"
+     << "  --multiresolution-faces N  cuts decided on a copy simplified to N faces for meshes\n"
+     << "                      of more than 2N (0: full resolution; library default if not given)\n"
      << "  --allow-overlaps    global_injectivity(false): no scaffold (with --box-stiffness 0, the\n"
      << "                      map as it was before the atlas work, only packed)\n"
      << "  --repeat N          runs per mesh; the time reported is their median (default 1;\n"
@@ -127,6 +129,14 @@ int parse_options(int argc, char** argv, Options& opt)
       { std::cerr << "error: --passes: expected a non-negative integer, got '" << v << "'\n"; return 2; }
       opt.passes = n;
       comparison_only.push_back(arg);
+    }
+    else if(arg == "--multiresolution-faces")
+    {
+      int n;
+      if(!value(v)) return 2;
+      if(!parse_int(v, n) || n < 0)
+      { std::cerr << "error: --multiresolution-faces: expected an integer >= 0, got '" << v << "'\n"; return 2; }
+      opt.multiresolution_faces = n;
     }
     else if(arg == "--allow-overlaps")
     {

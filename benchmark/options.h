@@ -31,6 +31,7 @@ struct Options
   std::optional<double> box;           // bounding_box_aspect_ratio (empty: the library's default box)
   std::optional<double> box_stiffness; // bounding_box_stiffness (empty: the library's default)
   bool allow_overlaps = false;         // global_injectivity(false)
+  std::optional<int> multiresolution_faces; // multiresolution_faces (empty: the library's default)
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;

@@ -159,8 +159,8 @@ std::vector<Scaling_mesh> scaling_meshes(const Options& opt, const fs::path& ele
 }
 
 /// The child's work: reads and subdivides the mesh, runs the method with its
-/// default named parameters.
-std::string measure_run(const Scaling_mesh& m)
+/// default named parameters (but --multiresolution-faces).
+std::string measure_run(const Scaling_mesh& m, const Options& opt)
 {
   Run_measure out;
   out.start_kib = peak_resident_kib();
@@ -172,7 +172,10 @@ std::string measure_run(const Scaling_mesh& m)
     out.faces = mesh.number_of_faces();
     auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:benchmark_seam", false).first;
     auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:benchmark_uv").first;
-    const SMP::Cut_and_parameterize_result r = SMP::cut_and_parameterize(mesh, seam, uv);
+    const SMP::internal::cut::Joint_settings defaults;
+    const SMP::Cut_and_parameterize_result r = SMP::cut_and_parameterize(
+      mesh, seam, uv,
+      SMP::parameters::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces)));
     out.error = int(r.error);
     out.timings = r.timings;
     out.newton_iterations = r.newton_iterations;
@@ -233,7 +236,7 @@ Scaling_row run_mesh(const Scaling_mesh& m, const Options& opt, std::size_t inde
   {
     std::cerr << "[" << index + 1 << "/" << count << "] " << m.name << " (" << m.faces << " faces), run "
               << r + 1 << "/" << runs << " ... " << std::flush;
-    const Child_result c = run_forked([&] { return measure_run(m); }, opt.time_limit);
+    const Child_result c = run_forked([&] { return measure_run(m, opt); }, opt.time_limit);
     if(c.kind == Child_result::TIMED_OUT)
     {
       row.over_limit = true;
@@ -297,13 +300,17 @@ std::vector<std::string> cells_of(const Scaling_row& row, double time_limit)
           row.status};
 }
 
-const char* cholesky_name()
+std::string cholesky_name()
 {
-#ifdef CGAL_SMP_CUT_USE_CHOLMOD
-  return "CHOLMOD supernodal";
-#else
-  return "Eigen simplicial LDLT";
+  using Solver = SMP::internal::cut::Sparse_cholesky;
+  std::string name = "Eigen simplicial LDLT (AMD)";
+#ifdef CGAL_SMP_CUT_USE_METIS
+  name += ", LLT (METIS) from " + std::to_string(Solver::metis_threshold) + " unknowns";
 #endif
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+  name += ", CHOLMOD supernodal from " + std::to_string(Solver::cholmod_threshold) + " unknowns";
+#endif
+  return name;
 }
 
 const char* tbb_name()
@@ -402,7 +409,9 @@ int run_scaling(const Options& opt)
             << "  machine:    " << std::thread::hardware_concurrency()
             << " hardware threads (std::thread::hardware_concurrency); TBB " << tbb_name() << "; sparse Cholesky: "
             << cholesky_name() << "\n"
-            << "  parameters: cut_and_parameterize() defaults\n"
+            << "  parameters: cut_and_parameterize() defaults"
+            << (opt.multiresolution_faces ? ", multiresolution_faces " + std::to_string(*opt.multiresolution_faces) : std::string())
+            << "\n"
             << "  runs:       each in a child process, killed after " << seconds_text(opt.time_limit)
             << " s; each figure the median of " << repeat << " run" << (repeat > 1 ? "s" : "") << " up to "
             << SCALING_REPEAT_MAX_FACES << " faces, of 1 run above\n\n";

@@ -110,6 +110,8 @@ Joint_settings joint_settings(const NamedParameters& np)
     s.bounding_box_distortion_budget = std::numeric_limits<double>::infinity();
   s.bounding_box_distortion_budget = choose_parameter(get_parameter(np, internal_np::bounding_box_distortion_budget),
                                                       s.bounding_box_distortion_budget);
+  s.multiresolution_faces = choose_parameter(get_parameter(np, internal_np::multiresolution_faces),
+                                             s.multiresolution_faces);
   s.global_injectivity = choose_parameter(get_parameter(np, internal_np::global_injectivity), s.global_injectivity);
   s.packing.texture_size = choose_parameter(get_parameter(np, internal_np::texture_size), s.packing.texture_size);
   s.packing.padding = choose_parameter(get_parameter(np, internal_np::padding), s.packing.padding);
@@ -266,6 +268,13 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     is dropped. Default 0.045 (`gentle_bounding_box_distortion_budget`)
 ///     for the default box; no limit (the box is kept as asked) once
 ///     `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given
+///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this
+///     many faces, the alternation decides the cuts on a copy simplified to
+///     about this many faces (CGAL's Surface_mesh_simplification, keeping the
+///     border, the given seams and the input's vertices), the cuts are carried
+///     back as shortest edge paths, and the final solve runs on the input. 0:
+///     always at full resolution. Default 10000 (the benchmark meshes, at most
+///     20k faces, are unchanged)
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
 ///

@@ -58,6 +58,7 @@ CGAL_SMP_CUT_NAMED_PARAMETER(progress_callback_t, progress_callback)
 CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut_length)
 /// true: refuse degenerate faces with ERROR_DEGENERATE_FACE instead of clamping them (default false).
 CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
+CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
 
 /// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a scaffold (bool, default true).
 CGAL_SMP_CUT_NAMED_PARAMETER(global_injectivity_t, global_injectivity)

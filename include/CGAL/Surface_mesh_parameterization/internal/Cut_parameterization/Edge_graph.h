@@ -92,6 +92,50 @@ public:
     return result;
   }
 
+  /// Mesh edges of a shortest path from `s` to `t` (empty if `t` is not
+  /// reachable or `s == t`). The search stops once `t` is settled, and
+  /// `scratch` keeps its arrays between calls, so that many short paths on a
+  /// large graph cost what they explore, not the size of the graph.
+  std::vector<int> shortest_path(int s, int t, Shortest_paths& scratch) const
+  {
+    if(scratch.distance.size() != arcs_.size())
+    {
+      scratch.distance.assign(arcs_.size(), std::numeric_limits<double>::infinity());
+      scratch.parent.assign(arcs_.size(), -1);
+      scratch.parent_edge.assign(arcs_.size(), -1);
+    }
+    std::vector<int> touched{s};
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    scratch.distance[s] = 0.;
+    queue.push({0., s});
+    while(!queue.empty())
+    {
+      const auto [d, u] = queue.top();
+      queue.pop();
+      if(u == t) break;
+      if(d > scratch.distance[u]) continue;
+      for(const Arc& arc : arcs_[u])
+        if(d + arc.weight < scratch.distance[arc.to])
+        {
+          if(!std::isfinite(scratch.distance[arc.to])) touched.push_back(arc.to);
+          scratch.distance[arc.to] = d + arc.weight;
+          scratch.parent[arc.to] = u;
+          scratch.parent_edge[arc.to] = arc.edge;
+          queue.push({scratch.distance[arc.to], arc.to});
+        }
+    }
+    std::vector<int> edges;
+    if(std::isfinite(scratch.distance[t])) edges = scratch.path_edges(t);
+    for(int v : touched)
+    {
+      scratch.distance[v] = std::numeric_limits<double>::infinity();
+      scratch.parent[v] = -1;
+      scratch.parent_edge[v] = -1;
+    }
+    return edges;
+  }
+
 private:
   std::vector<std::vector<Arc>> arcs_;
 };
