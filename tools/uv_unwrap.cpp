@@ -4,6 +4,7 @@
 // coordinates and, on request, a JSON file of statistics and pictures
 // (tools/preview). By default the result is a texture atlas: charts free of
 // overlap, packed into the unit square with a padding in texels.
+#include "blas_threads.h"
 #include "json_text.h"
 #include "mesh_input.h"
 
@@ -536,6 +537,7 @@ void run(const char* argv0, Options& options, Run_summary& summary)
 
 int main(int argc, char** argv)
 {
+  cut_tools::use_one_blas_thread(); // see blas_threads.h
   Options options;
   try
   {
