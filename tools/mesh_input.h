@@ -126,6 +126,10 @@ struct Input_report
   std::size_t triangulated_faces = 0;    ///< polygons with more than 3 vertices
   std::size_t isolated_vertices = 0;     ///< vertices in no face (no UV)
   std::size_t degenerate_faces = 0;      ///< zero-area or needle faces
+  /// Per face of the mesh (by index): the polygon of the file it comes
+  /// from. Empty when `repaired` (the repair reorders faces and vertices);
+  /// otherwise vertex i of the mesh is point i of the file.
+  std::vector<std::size_t> face_origin;
 };
 
 namespace detail {
@@ -1010,7 +1014,11 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
       "); vertex and face indices below refer to the repaired mesh");
   }
   else
+  {
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    report.face_origin.resize(num_faces(mesh));
+    for(std::size_t f = 0; f < report.face_origin.size(); ++f) report.face_origin[f] = f;
+  }
 
   // Triangulation of the faces with more than 3 vertices.
   std::size_t first_polygon = 0, first_degree = 0;
@@ -1027,7 +1035,11 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
     const std::size_t before = num_faces(mesh);
     std::size_t refused = 0;
     for(Mesh::Face_index f : polygons_to_split)
+    {
       if(!detail::triangulate_face(f, mesh)) ++refused;
+      if(!report.face_origin.empty()) // the new triangles come from the same polygon
+        report.face_origin.resize(num_faces(mesh), report.face_origin[std::size_t(f)]);
+    }
     if(!CGAL::is_triangle_mesh(mesh) || !mesh.is_valid(false))
       detail::fail("ERROR_NON_TRIANGULAR_MESH", detail::quoted(filename) + ": face " +
                                                 std::to_string(first_polygon) + " could not be triangulated");

@@ -5,8 +5,9 @@
 // (tools/preview). By default the result is a texture atlas: charts free of
 // overlap, packed into the unit square with a padding in texels.
 #include "blas_threads.h"
-#include "json_text.h"
 #include "mesh_input.h"
+#include "mesh_output.h"
+#include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -17,7 +18,11 @@
 
 #include "preview/preview.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -27,7 +32,7 @@
 #include <functional>
 #include <fstream>
 #include <iostream>
-#include <limits>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -46,195 +51,8 @@ using halfedge_descriptor = Mesh::Halfedge_index;
 using edge_descriptor = Mesh::Edge_index;
 using face_descriptor = Mesh::Face_index;
 
-// Any failure the user should read about: main prints it as one line.
-// `status` goes to the statistics (ERROR_USAGE for command-line mistakes).
-struct Failure : std::runtime_error
-{
-  explicit Failure(const std::string& message, std::string status_ = "ERROR_USAGE")
-    : std::runtime_error(message), status(std::move(status_)) {}
-  std::string status;
-};
-
-struct Options
-{
-  std::string input;          // empty: the built-in default mesh
-  std::string output;         // empty: <input stem>_uv.obj in the current directory
-  std::string stats;
-  std::string svg, png, v_field; // pictures, written by tools/preview
-  Preview_camera camera;         // of the PNG; y up unless --up
-  double lambda = 1.;
-  double epsilon_start = 0.1;
-  double epsilon_end = 0.01;
-  int iterations = 3;
-  int passes = 1;
-  // atlas
-  bool allow_overlaps = false;   // global_injectivity(false)
-  bool world_units = false;
-  int texture_size = 1024;
-  double padding = 2.;           // texels
-  double box_aspect_ratio = 1.;  // width / height of the bounding box
-  double box_stiffness = -1.;    // < 0: gentle (5) for the default square, tight (300) with --box
-  bool box_given = false;
-  double box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
-  bool quiet = false;
-};
-
-const char* const usage_text =
-  "usage: uv_unwrap [INPUT] [options]\n"
-  "\n"
-  "Cuts a mesh (OBJ, OFF, PLY or STL) along seams chosen jointly with a\n"
-  "low-distortion UV map (Ambrosio-Tortorelli method) and writes the result as\n"
-  "an OBJ with texture coordinates. Without INPUT, runs on a built-in mesh.\n"
-  "Polygons are triangulated and non-manifold input is repaired, with a\n"
-  "warning on stderr; unusable input is an error (exit status 1).\n"
-  "\n"
-  "options:\n"
-  "  -o, --output FILE       output OBJ (default: <input name>_uv.obj in the current directory)\n"
-  "  --stats FILE            write statistics as JSON\n"
-  "  --lambda X              seam cost, relative to the mean edge length (default 1)\n"
-  "  --epsilon-start X       first epsilon, relative to the mean edge length (default 0.1)\n"
-  "  --epsilon-end X         epsilon is halved while above this value (default 0.01)\n"
-  "  --iterations N          alternations per epsilon (default 3)\n"
-  "  --passes N              optimize-and-cut passes (default 1)\n"
-  "  --allow-overlaps        let a chart overlap itself (no scaffold; charts still packed apart)\n"
-  "  --world-units           keep UVs in 3D units (charts still packed) instead of [0,1]\n"
-  "  --texture-size N        texture width and height in texels, unit of --padding (default 1024)\n"
-  "  --padding TEXELS        gap between charts and to the square's sides, >= 0 (default 2)\n"
-  "  --box W:H               pull each chart tightly into a W:H rectangle (e.g. 2:1); without\n"
-  "                          it, a gentle pull into a square rounds charts off\n"
-  "  --box-stiffness S       how hard the box pulls, >= 0 (default 5, or 300 with --box);\n"
-  "                          given, the box is kept whatever it costs (the default box is\n"
-  "                          weakened, then dropped, where it raises E_d by more than 0.045)\n"
-  "  --no-box                no bounding box at all (same as --box-stiffness 0)\n"
-  "  --svg FILE              write the UV layout, colored by distortion, as SVG\n"
-  "  --png FILE              write a checkerboard-textured render of the mesh as PNG\n"
-  "  --up AXIS               up axis of the mesh for --png: x, y, z, -z, ... (default y)\n"
-  "  --v-field FILE.ply      write the discontinuity field v as a colored PLY\n"
-  "  -q, --quiet             print nothing but warnings and errors\n"
-  "  -h, --help              show this help\n";
-
-double parse_number(const std::string& option, const std::string& text)
-{
-  std::size_t used = 0;
-  double value = 0.;
-  try { value = std::stod(text, &used); } catch(const std::exception&) { used = 0; }
-  if(used == 0 || used != text.size() || !std::isfinite(value))
-    throw Failure("invalid value '" + text + "' for " + option + " (expected a number)");
-  return value;
-}
-
-int parse_count(const std::string& option, const std::string& text)
-{
-  const double value = parse_number(option, text);
-  if(value != std::floor(value) || value < 1. || value > 1e6)
-    throw Failure("invalid value '" + text + "' for " + option + " (expected a positive integer)");
-  return int(value);
-}
-
-// "W:H", both positive numbers: the aspect ratio W / H.
-double parse_aspect_ratio(const std::string& option, const std::string& text)
-{
-  const std::size_t colon = text.find(':');
-  const std::string expected = " (expected W:H, two positive numbers, e.g. 2:1)";
-  if(colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
-    throw Failure("invalid value '" + text + "' for " + option + expected);
-  double w = 0., h = 0.;
-  try
-  {
-    w = parse_number(option, text.substr(0, colon));
-    h = parse_number(option, text.substr(colon + 1));
-  }
-  catch(const Failure&)
-  {
-    throw Failure("invalid value '" + text + "' for " + option + expected);
-  }
-  if(!(w > 0.) || !(h > 0.) || !std::isfinite(w / h) || !(w / h > 0.))
-    throw Failure("invalid value '" + text + "' for " + option + expected);
-  return w / h;
-}
-
-// Returns false when the program should stop successfully (--help).
-bool parse_arguments(int argc, char** argv, Options& options)
-{
-  std::vector<std::string> args(argv + 1, argv + argc);
-  for(std::size_t i = 0; i < args.size(); ++i)
-  {
-    std::string arg = args[i], value;
-    bool has_inline_value = false;
-    // Accept both "--name value" and "--name=value".
-    if(arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos)
-    {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      has_inline_value = true;
-    }
-    auto next_value = [&]() -> std::string {
-      if(has_inline_value) return value;
-      if(i + 1 >= args.size()) throw Failure("option " + arg + " needs a value");
-      return args[++i];
-    };
-
-    if(arg == "-h" || arg == "--help") { std::cout << usage_text; return false; }
-    else if(arg == "-q" || arg == "--quiet") options.quiet = true;
-    else if(arg == "-o" || arg == "--output") options.output = next_value();
-    else if(arg == "--stats") options.stats = next_value();
-    else if(arg == "--lambda") options.lambda = parse_number(arg, next_value());
-    else if(arg == "--epsilon-start") options.epsilon_start = parse_number(arg, next_value());
-    else if(arg == "--epsilon-end") options.epsilon_end = parse_number(arg, next_value());
-    else if(arg == "--iterations") options.iterations = parse_count(arg, next_value());
-    else if(arg == "--passes") options.passes = parse_count(arg, next_value());
-    else if(arg == "--allow-overlaps") options.allow_overlaps = true;
-    else if(arg == "--world-units") options.world_units = true;
-    else if(arg == "--texture-size") options.texture_size = parse_count(arg, next_value());
-    else if(arg == "--padding")
-    {
-      const std::string text = next_value();
-      options.padding = parse_number(arg, text);
-      if(!(options.padding >= 0.))
-        throw Failure("invalid value '" + text + "' for --padding (expected a number >= 0, in texels)");
-    }
-    else if(arg == "--box")
-    {
-      options.box_aspect_ratio = parse_aspect_ratio(arg, next_value());
-      options.box_given = true;
-    }
-    else if(arg == "--box-stiffness")
-    {
-      const std::string text = next_value();
-      options.box_stiffness = parse_number(arg, text);
-      if(!(options.box_stiffness >= 0.) || !std::isfinite(options.box_stiffness))
-        throw Failure("invalid value '" + text + "' for --box-stiffness (expected a number >= 0)");
-    }
-    else if(arg == "--no-box") options.box_stiffness = 0.;
-    else if(arg == "--svg") options.svg = next_value();
-    else if(arg == "--png") options.png = next_value();
-    else if(arg == "--up")
-    {
-      const std::string axis = next_value();
-      if(!preview_camera_for_up_axis(axis, options.camera))
-        throw Failure("invalid value '" + axis + "' for --up (expected x, y, z, -x, -y or -z)");
-    }
-    else if(arg == "--v-field") options.v_field = next_value();
-    else if(arg.size() > 1 && arg[0] == '-')
-      throw Failure("unknown option '" + arg + "' (see --help)");
-    else if(!options.input.empty())
-      throw Failure("more than one input file given ('" + options.input + "' and '" + arg + "')");
-    else
-      options.input = arg;
-  }
-  // as in the library: a box asked for is kept whatever it costs, the default one within a budget
-  if(options.box_given || options.box_stiffness >= 0.)
-    options.box_distortion_budget = std::numeric_limits<double>::infinity();
-  if(options.box_stiffness < 0.)
-    options.box_stiffness = options.box_given ? SMP::tight_bounding_box_stiffness
-                                              : SMP::gentle_bounding_box_stiffness;
-  if(!(options.lambda > 0.)) throw Failure("--lambda must be positive");
-  if(!(options.epsilon_start > 0.) || !(options.epsilon_end > 0.))
-    throw Failure("--epsilon-start and --epsilon-end must be positive");
-  if(options.epsilon_end > options.epsilon_start)
-    throw Failure("--epsilon-end must not exceed --epsilon-start");
-  return true;
-}
+using uv_unwrap::Failure;
+using uv_unwrap::Options;
 
 // ---------------------------------------------------------------- input
 
@@ -297,9 +115,9 @@ std::string find_default_mesh(const char* argv0)
 
 // Reads, validates and repairs (tools/mesh_input.h); warnings go to stderr
 // and to the statistics.
-void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>& warnings)
+void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>& warnings,
+               mesh_input::Input_report& report)
 {
-  mesh_input::Input_report report;
   try
   {
     mesh_input::read_input_mesh(filename, mesh, report);
@@ -317,12 +135,10 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
 
 // ---------------------------------------------------------------- output
 
-using cut_tools::json_number;
-using cut_tools::json_string;
-
 struct Run_summary
 {
   std::string input;
+  std::string output;                 // empty until written
   std::string status = "ok";          // "ok", ERROR_USAGE, an input error or a library error name
   std::string error;                  // one-line message when status is not "ok"
   std::vector<std::string> warnings;  // input repairs and remarks
@@ -333,40 +149,49 @@ struct Run_summary
   double time_seconds = 0.;
 };
 
-void write_stats(const std::string& filename, const Run_summary& s)
+// The statistics of one run (documented in the README); numbers that are
+// not finite become null (JSON has no NaN).
+nlohmann::ordered_json statistics(const Run_summary& s)
 {
   const SMP::Cut_and_parameterize_timings& t = s.result.timings;
+  auto number = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
+  nlohmann::ordered_json j;
+  j["input"] = s.input;
+  j["output"] = s.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.output);
+  j["status"] = s.status;
+  j["error"] = s.status == "ok" ? nlohmann::ordered_json() : nlohmann::ordered_json(s.error);
+  j["warnings"] = s.warnings;
+  j["vertices"] = s.vertices;
+  j["faces"] = s.faces;
+  j["degenerate_faces"] = s.result.number_of_degenerate_faces;
+  j["charts"] = s.result.number_of_charts;
+  j["seam_edges"] = s.result.number_of_seam_edges;
+  j["seam_length"] = number(s.result.seam_length);
+  j["distortion"] = number(s.result.distortion);
+  j["initial_distortion"] = number(s.result.initial_distortion);
+  j["flipped_faces"] = s.flipped_faces;
+  j["border_crossings"] = s.border_crossings;
+  j["uv_coverage"] = number(s.result.uv_coverage);
+  j["uv_scale"] = number(s.result.uv_scale);
+  j["uv_in_unit_square"] = s.uv_in_unit_square;
+  j["time_seconds"] = number(s.time_seconds);
+  j["newton_iterations"] = s.result.newton_iterations;
+  j["factorizations"] = s.result.number_of_factorizations;
+  j["timings"] = {{"initialization", number(t.initialization)}, {"u_steps", number(t.u_steps)},
+                  {"v_steps", number(t.v_steps)}, {"cut_extraction", number(t.cut_extraction)},
+                  {"final_solve", number(t.final_solve)}, {"packing", number(t.packing)},
+                  {"total", number(t.total)}};
+  if(s.status != "ok") // nothing was measured: no figure rather than zeros
+    for(auto& [key, value] : j.items())
+      if(value.is_number() || value.is_boolean() || value.is_object())
+        if(key != "vertices" && key != "faces") value = nullptr;
+  return j;
+}
+
+void write_stats(const std::string& filename, const Run_summary& s)
+{
   std::ofstream out(filename);
-  out << "{\n"
-      << "  \"input\": " << json_string(s.input) << ",\n"
-      << "  \"status\": " << json_string(s.status) << ",\n"
-      << "  \"error\": " << (s.status == "ok" ? std::string("null") : json_string(s.error)) << ",\n"
-      << "  \"warnings\": [";
-  for(std::size_t i = 0; i < s.warnings.size(); ++i)
-    out << (i ? ",\n    " : "\n    ") << json_string(s.warnings[i]);
-  out << (s.warnings.empty() ? "" : "\n  ") << "],\n"
-      << "  \"vertices\": " << s.vertices << ",\n"
-      << "  \"faces\": " << s.faces << ",\n"
-      << "  \"degenerate_faces\": " << s.result.number_of_degenerate_faces << ",\n"
-      << "  \"charts\": " << s.result.number_of_charts << ",\n"
-      << "  \"seam_edges\": " << s.result.number_of_seam_edges << ",\n"
-      << "  \"seam_length\": " << json_number(s.result.seam_length) << ",\n"
-      << "  \"distortion\": " << json_number(s.result.distortion) << ",\n"
-      << "  \"initial_distortion\": " << json_number(s.result.initial_distortion) << ",\n"
-      << "  \"flipped_faces\": " << s.flipped_faces << ",\n"
-      << "  \"border_crossings\": " << s.border_crossings << ",\n"
-      << "  \"uv_coverage\": " << json_number(s.result.uv_coverage) << ",\n"
-      << "  \"uv_scale\": " << json_number(s.result.uv_scale) << ",\n"
-      << "  \"uv_in_unit_square\": " << (s.uv_in_unit_square ? "true" : "false") << ",\n"
-      << "  \"time_seconds\": " << json_number(s.time_seconds) << ",\n"
-      << "  \"newton_iterations\": " << s.result.newton_iterations << ",\n"
-      << "  \"factorizations\": " << s.result.number_of_factorizations << ",\n"
-      << "  \"timings\": {\"initialization\": " << json_number(t.initialization)
-      << ", \"u_steps\": " << json_number(t.u_steps) << ", \"v_steps\": " << json_number(t.v_steps)
-      << ", \"cut_extraction\": " << json_number(t.cut_extraction)
-      << ", \"final_solve\": " << json_number(t.final_solve) << ", \"packing\": " << json_number(t.packing)
-      << ", \"total\": " << json_number(t.total) << "}\n"
-      << "}\n";
+  out << statistics(s).dump(2) << '\n';
   out.close();
   if(!out) throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
 }
@@ -431,20 +256,75 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
 
 // ---------------------------------------------------------------- run
 
-void run(const char* argv0, Options& options, Run_summary& summary)
+// Writes the unwrapped mesh as `format`. An OBJ read without repair keeps
+// the input's other lines (tools/mesh_output.h); other inputs get the
+// library's plain OBJ writer.
+template <typename UVMap>
+void write_output(const std::string& output, const std::string& format, const std::string& input,
+                  const mesh_input::Input_report& report, const Mesh& mesh, const UVMap& uvmap,
+                  std::vector<std::string>& warnings)
+{
+  bool written = false;
+  if(format == "ply")
+    written = mesh_output::write_ply_with_texcoords(output, mesh, uvmap);
+  else if(mesh_input::detail::lower_extension(input) == "obj" && !report.face_origin.empty())
+  {
+    std::string problem;
+    written = mesh_output::write_obj_keeping_input(input, output, mesh, uvmap, report.face_origin, problem);
+    if(!written)
+    {
+      const std::string w = "the input's normals, groups and materials are not kept: " + problem;
+      std::cerr << "uv_unwrap: warning: " << w << std::endl;
+      warnings.push_back(w);
+    }
+  }
+  else if(format == "obj" && mesh_input::detail::lower_extension(input) == "obj")
+  {
+    const std::string w = "the input was repaired: the output has the repaired mesh's numbering, without the "
+                          "input's normals, groups and materials";
+    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    warnings.push_back(w);
+  }
+  if(!written && format == "obj") written = SMP::write_OBJ_with_uvs(output, mesh, uvmap);
+  if(!written) throw Failure("cannot write '" + output + "'", "ERROR_CANNOT_WRITE");
+}
+
+// The output file of `input` (stem `stem`): -o, else <stem>_uv.<format> in
+// --output-dir. The format is --format, else -o's extension, else the
+// input's (OBJ for OFF and STL, which have no texture coordinates).
+std::string output_format(const Options& options, const std::string& input)
+{
+  if(!options.output_format.empty()) return options.output_format;
+  const std::string from = !options.output.empty() ? options.output : input;
+  std::string extension = fs::path(from).extension().string();
+  for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if(extension == ".ply") return "ply";
+  if(extension == ".obj" || options.output.empty()) return "obj";
+  throw Failure("cannot tell the format of '" + options.output + "' (give .obj or .ply, or --format)");
+}
+
+std::string output_file(const Options& options, const std::string& stem, const std::string& format)
+{
+  if(!options.output.empty()) return options.output;
+  const fs::path dir = options.output_dir.empty() ? fs::path() : fs::path(options.output_dir);
+  return (dir / (stem + "_uv." + format)).string();
+}
+
+void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
 {
   Mesh mesh;
+  mesh_input::Input_report report;
   std::string stem;
-  if(!options.input.empty())
+  if(!input.empty())
   {
-    summary.input = options.input;
-    read_mesh(options.input, mesh, summary.warnings);
-    stem = fs::path(options.input).stem().string();
+    summary.input = input;
+    read_mesh(input, mesh, summary.warnings, report);
+    stem = fs::path(input).stem().string();
   }
   else if(std::string data_mesh = find_default_mesh(argv0); !data_mesh.empty())
   {
     summary.input = data_mesh;
-    read_mesh(data_mesh, mesh, summary.warnings);
+    read_mesh(data_mesh, mesh, summary.warnings, report);
     stem = fs::path(data_mesh).stem().string();
   }
   else
@@ -453,7 +333,8 @@ void run(const char* argv0, Options& options, Run_summary& summary)
     summary.input = "built-in spherical cap";
     stem = "spherical_cap";
   }
-  if(options.output.empty()) options.output = stem + "_uv.obj";
+  const std::string format = output_format(options, input);
+  const std::string output = output_file(options, stem, format);
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);
   if(!options.quiet)
@@ -512,8 +393,8 @@ void run(const char* argv0, Options& options, Run_summary& summary)
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the
   // input.
-  if(!SMP::write_OBJ_with_uvs(options.output, mesh, uvmap))
-    throw Failure("cannot write '" + options.output + "'", "ERROR_CANNOT_WRITE");
+  write_output(output, format, summary.input, report, mesh, uvmap, summary.warnings);
+  summary.output = output;
   write_pictures(options, mesh, seams, uvmap, v_field, summary, stem);
 
   if(!options.quiet)
@@ -526,35 +407,23 @@ void run(const char* argv0, Options& options, Run_summary& summary)
               << "  UV coverage " << 100. * r.uv_coverage << " %, border crossings " << summary.border_crossings
               << ", UVs " << (summary.uv_in_unit_square ? "in" : "not in") << " the unit square\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
-              << "  wrote " << options.output;
+              << "  wrote " << output;
     for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field})
       if(!file->empty()) std::cout << ", " << *file;
     std::cout << std::endl;
   }
 }
 
-} // namespace
 
-int main(int argc, char** argv)
+// Unwraps one input (empty: the default mesh); every failure ends up in
+// the summary's status and message.
+Run_summary unwrap_one(const char* argv0, const Options& options, const std::string& input)
 {
-  cut_tools::use_one_blas_thread(); // see blas_threads.h
-  Options options;
-  try
-  {
-    if(!parse_arguments(argc, argv, options)) return EXIT_SUCCESS;
-  }
-  catch(const Failure& e)
-  {
-    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
-    return EXIT_FAILURE;
-  }
-
-  // Every failure from here on is one line on stderr, exit status 1, and
-  // the statistics (when asked for) with its status and message.
   Run_summary summary;
+  summary.input = input;
   try
   {
-    run(argv[0], options, summary);
+    run(argv0, options, input, summary);
   }
   catch(const Failure& e)
   {
@@ -586,7 +455,82 @@ int main(int argc, char** argv)
       }
     }
   }
-  if(summary.status == "ok") return EXIT_SUCCESS;
-  std::cerr << "uv_unwrap: error: " << summary.error << std::endl;
-  return EXIT_FAILURE;
+  return summary;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  cut_tools::use_one_blas_thread(); // see blas_threads.h
+  Options options;
+  try
+  {
+    if(!uv_unwrap::parse_arguments(argc, argv, options)) return EXIT_SUCCESS;
+    if(!options.output_dir.empty())
+    {
+      std::error_code ec;
+      fs::create_directories(options.output_dir, ec);
+      if(ec) throw Failure("cannot create the directory '" + options.output_dir + "': " + ec.message(),
+                           "ERROR_CANNOT_WRITE");
+    }
+  }
+  catch(const Failure& e)
+  {
+    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  // JSON Lines, flushed after each input so that a long batch can be followed.
+  std::ofstream jsonl_file;
+  std::ostream* jsonl = nullptr;
+  if(options.jsonl == "-") jsonl = &std::cout;
+  else if(!options.jsonl.empty())
+  {
+    jsonl_file.open(options.jsonl);
+    if(!jsonl_file)
+    {
+      std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+      return EXIT_FAILURE;
+    }
+    jsonl = &jsonl_file;
+  }
+  if(jsonl == &std::cout) options.quiet = true; // stdout holds the JSON lines only
+
+  // Each input on its own: a failure is reported and the next one runs.
+  // Two inputs of the same name would write the same output: the second fails.
+  std::vector<std::string> inputs = options.inputs;
+  if(inputs.empty()) inputs.push_back(std::string()); // the default mesh
+  std::set<std::string> outputs;
+  int failures = 0;
+  for(const std::string& input : inputs)
+  {
+    Run_summary summary;
+    const std::string stem = fs::path(input).stem().string();
+    if(inputs.size() > 1 && !outputs.insert(stem).second)
+    {
+      summary.input = input;
+      summary.status = "ERROR_USAGE";
+      summary.error = "another input of the same name ('" + stem + "') was written to the same output";
+    }
+    else
+      summary = unwrap_one(argv[0], options, input);
+    if(summary.status != "ok")
+    {
+      ++failures;
+      const bool named = inputs.size() == 1 || summary.error.find(summary.input) != std::string::npos;
+      std::cerr << "uv_unwrap: error: " << (named ? std::string() : summary.input + ": ") << summary.error
+                << std::endl;
+    }
+    if(jsonl) *jsonl << statistics(summary).dump() << std::endl;
+  }
+  if(jsonl && !*jsonl)
+  {
+    std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+    ++failures;
+  }
+  if(inputs.size() > 1 && !options.quiet)
+    std::cout << "uv_unwrap: " << inputs.size() - failures << " of " << inputs.size() << " inputs unwrapped"
+              << std::endl;
+  return std::min(failures, 100);
 }

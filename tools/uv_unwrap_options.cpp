@@ -1,0 +1,265 @@
+// uv_unwrap's command line, declared with CLI11: syntax (--name value,
+// --name=value, -o FILE), unknown options, missing values and --help are
+// CLI11's; the values are checked by the validators below, whose messages
+// name the value and what was expected.
+#include "uv_unwrap_options.h"
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace uv_unwrap {
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+// The whole text is a finite number.
+bool parse_number(const std::string& text, double& value)
+{
+  std::size_t used = 0;
+  try { value = std::stod(text, &used); } catch(const std::exception&) { return false; }
+  return used != 0 && used == text.size() && std::isfinite(value);
+}
+
+// "W:H", both positive numbers: the aspect ratio W / H.
+bool parse_aspect_ratio(const std::string& text, double& ratio)
+{
+  const std::size_t colon = text.find(':');
+  if(colon == std::string::npos || text.find(':', colon + 1) != std::string::npos) return false;
+  double w = 0., h = 0.;
+  if(!parse_number(text.substr(0, colon), w) || !parse_number(text.substr(colon + 1), h)) return false;
+  ratio = w / h;
+  return w > 0. && h > 0. && std::isfinite(ratio) && ratio > 0.;
+}
+
+std::string invalid(const std::string& text, const std::string& expected)
+{
+  return "invalid value '" + text + "' (expected " + expected + ")";
+}
+
+// A finite number for which `accept` holds, rewritten with all its digits so
+// that CLI11's conversion gives the same double as std::stod.
+CLI::Validator number(const std::string& expected, std::function<bool(double)> accept)
+{
+  return CLI::Validator(
+    [expected, accept](std::string& text) -> std::string {
+      double value = 0.;
+      if(!parse_number(text, value) || !accept(value)) return invalid(text, expected);
+      char digits[32];
+      std::snprintf(digits, sizeof digits, "%.17g", value);
+      text = digits;
+      return {};
+    },
+    "");
+}
+
+// A whole number in [1, 1e6], in any notation std::stod reads ("2e3" too),
+// rewritten as an integer for CLI11's conversion.
+CLI::Validator count()
+{
+  return CLI::Validator(
+    [](std::string& text) -> std::string {
+      double value = 0.;
+      if(!parse_number(text, value) || value != std::floor(value) || value < 1. || value > 1e6)
+        return invalid(text, "a positive integer");
+      text = std::to_string(static_cast<long>(value));
+      return {};
+    },
+    "");
+}
+
+const char* const description =
+  "Cuts meshes (OBJ, OFF, PLY or STL) along seams chosen jointly with a\n"
+  "low-distortion UV map (Ambrosio-Tortorelli method) and writes each result\n"
+  "with texture coordinates: an OBJ keeps the input's other lines (normals,\n"
+  "groups, materials), a PLY gets a per-face texcoord list. Without INPUT, runs\n"
+  "on a built-in mesh. Polygons are triangulated and non-manifold input is\n"
+  "repaired, with a warning on stderr. With several inputs (or a directory),\n"
+  "a failed mesh does not stop the others; the exit status is the number of\n"
+  "failed inputs (at most 100), 0 when all succeeded.";
+
+// Each directory of `inputs` replaced by its mesh files, sorted by name.
+std::vector<std::string> expand_directories(const std::vector<std::string>& inputs)
+{
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  for(const std::string& input : inputs)
+  {
+    std::error_code ec;
+    if(!fs::is_directory(input, ec)) { files.push_back(input); continue; }
+    std::vector<std::string> found;
+    for(const fs::directory_entry& entry : fs::directory_iterator(input, ec))
+    {
+      std::string extension = entry.path().extension().string();
+      for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if(entry.is_regular_file(ec) && is_mesh_extension(extension)) found.push_back(entry.path().string());
+    }
+    if(ec) throw Failure("cannot list the directory '" + input + "': " + ec.message(), "ERROR_CANNOT_READ");
+    if(found.empty()) throw Failure("no mesh file (.obj .off .ply .stl) in the directory '" + input + "'");
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  return files;
+}
+
+} // namespace
+
+bool is_mesh_extension(const std::string& extension)
+{
+  return extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl";
+}
+
+bool parse_arguments(int argc, char** argv, Options& options)
+{
+  CLI::App app(description, "uv_unwrap");
+  app.get_formatter()->column_width(26);
+  // as before CLI11: an option given twice takes its last value
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  const auto positive = [](double x) { return x > 0.; };
+
+  app.add_option("INPUT", options.inputs,
+                 "mesh files, or directories (their .obj .off .ply .stl files,\n"
+                 "sorted by name); default: CGAL's meshes/mushroom.off through\n"
+                 "CGAL_DATA_DIR or the build's data/, else a built-in mesh")
+    ->type_name("FILE|DIR");
+
+  const std::string output = "Output";
+  app.add_option("-o,--output", options.output,
+                 "output file, one input only; its extension (.obj or .ply)\n"
+                 "gives the format (default: <input name>_uv.<ext> in --output-dir)")
+    ->type_name("FILE")->group(output);
+  app.add_option("--output-dir", options.output_dir, "folder of the outputs (default: the current directory;\n"
+                                                      "created if missing)")
+    ->type_name("DIR")->group(output);
+  app.add_option("--format", options.output_format,
+                 "format of the outputs: obj or ply (default: that of -o, else\n"
+                 "of the input; obj for .off and .stl inputs)")
+    ->type_name("FMT")->check(CLI::IsMember({"obj", "ply"}))->group(output);
+  app.add_option("--stats", options.stats, "write statistics as JSON, one input only")->type_name("FILE")->group(output);
+  app.add_option("--jsonl", options.jsonl, "write statistics as JSON Lines: one line per input\n"
+                                           "('-': standard output)")
+    ->type_name("FILE")->group(output);
+  app.add_flag("-q,--quiet", options.quiet, "print nothing but warnings and errors")->group(output);
+
+  const std::string method = "Method";
+  app.add_option("--lambda", options.lambda, "seam cost, relative to the mean edge length (default 1)")
+    ->type_name("X")->transform(number("a positive number", positive))->group(method);
+  app.add_option("--epsilon-start", options.epsilon_start,
+                 "first epsilon, relative to the mean edge length (default 0.1)")
+    ->type_name("X")->transform(number("a positive number", positive))->group(method);
+  app.add_option("--epsilon-end", options.epsilon_end, "epsilon is halved while above this value (default 0.01)")
+    ->type_name("X")->transform(number("a positive number", positive))->group(method);
+  app.add_option("--iterations", options.iterations, "alternations per epsilon (default 3)")
+    ->type_name("N")->transform(count())->group(method);
+  app.add_option("--passes", options.passes, "optimize-and-cut passes (default 1)")
+    ->type_name("N")->transform(count())->group(method);
+
+  const std::string atlas = "Texture atlas";
+  app.add_flag("--allow-overlaps", options.allow_overlaps,
+               "let a chart overlap itself (no scaffold; charts still packed apart)")->group(atlas);
+  app.add_flag("--world-units", options.world_units,
+               "keep UVs in 3D units (charts still packed) instead of [0,1]")->group(atlas);
+  app.add_option("--texture-size", options.texture_size,
+                 "texture width and height in texels, unit of --padding (default 1024)")
+    ->type_name("N")->transform(count())->group(atlas);
+  app.add_option("--padding", options.padding, "gap between charts and to the square's sides, >= 0 (default 2)")
+    ->type_name("TEXELS")
+    ->transform(number("a number >= 0, in texels", [](double x) { return x >= 0.; }))->group(atlas);
+  app.add_option_function<std::string>("--box",
+      [&options](const std::string& text) {
+        parse_aspect_ratio(text, options.box_aspect_ratio); // checked by the validator
+        options.box_given = true;
+      },
+      "pull each chart tightly into a W:H rectangle (e.g. 2:1); without\n"
+      "it, a gentle pull into a square rounds charts off")
+    ->type_name("W:H")
+    ->check(CLI::Validator(
+        [](std::string& text) {
+          double ratio = 0.;
+          return parse_aspect_ratio(text, ratio) ? std::string() : invalid(text, "W:H, two positive numbers, e.g. 2:1");
+        },
+        ""))
+    ->group(atlas);
+  app.add_option("--box-stiffness", options.box_stiffness,
+                 "how hard the box pulls, >= 0 (default 5, or 300 with --box);\n"
+                 "given, the box is kept whatever it costs (the default box is\n"
+                 "weakened, then dropped, where it raises E_d by more than 0.045)")
+    ->type_name("S")->transform(number("a number >= 0", [](double x) { return x >= 0.; }))->group(atlas);
+  bool no_box = false;
+  app.add_flag("--no-box", no_box, "no bounding box at all (same as --box-stiffness 0)")->group(atlas);
+
+  const std::string pictures = "Pictures";
+  app.add_option("--svg", options.svg, "write the UV layout, colored by distortion, as SVG")
+    ->type_name("FILE")->group(pictures);
+  app.add_option("--png", options.png, "write a checkerboard-textured render of the mesh as PNG")
+    ->type_name("FILE")->group(pictures);
+  app.add_option_function<std::string>("--up",
+      [&options](const std::string& axis) { preview_camera_for_up_axis(axis, options.camera); },
+      "up axis of the mesh for --png: x, y, z, -z, ... (default y)")
+    ->type_name("AXIS")
+    ->check(CLI::Validator(
+        [](std::string& axis) {
+          Preview_camera camera;
+          return preview_camera_for_up_axis(axis, camera) ? std::string()
+                                                          : invalid(axis, "x, y, z, -x, -y or -z");
+        },
+        ""))
+    ->group(pictures);
+  app.add_option("--v-field", options.v_field, "write the discontinuity field v as a colored PLY")
+    ->type_name("FILE.ply")->group(pictures);
+
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch(const CLI::CallForHelp& e)
+  {
+    app.exit(e); // prints the help on stdout
+    return false;
+  }
+  catch(const CLI::ParseError& e)
+  {
+    throw Failure(std::string(e.what()) + " (see --help)");
+  }
+
+  if(no_box)
+  {
+    if(options.box_stiffness > 0.) throw Failure("--no-box contradicts --box-stiffness (give one of them)");
+    options.box_stiffness = 0.;
+  }
+  // as in the library: a box asked for is kept whatever it costs, the default one within a budget
+  options.box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
+  if(options.box_given || options.box_stiffness >= 0.)
+    options.box_distortion_budget = std::numeric_limits<double>::infinity();
+  if(options.box_stiffness < 0.)
+    options.box_stiffness = options.box_given ? SMP::tight_bounding_box_stiffness
+                                              : SMP::gentle_bounding_box_stiffness;
+  const bool several = options.inputs.size() > 1 ||
+                       (options.inputs.size() == 1 && std::filesystem::is_directory(options.inputs.front()));
+  options.inputs = expand_directories(options.inputs);
+  if(several && !options.output.empty())
+    throw Failure("-o/--output takes one input; give --output-dir for several");
+  if(!options.output.empty() && !options.output_dir.empty())
+    throw Failure("give -o/--output or --output-dir, not both");
+  if(several && !options.stats.empty())
+    throw Failure("--stats takes one input; give --jsonl for several");
+  if(several && !(options.svg.empty() && options.png.empty() && options.v_field.empty()))
+    throw Failure("--svg, --png and --v-field take one input");
+  if(options.epsilon_end > options.epsilon_start)
+    throw Failure("--epsilon-end must not exceed --epsilon-start");
+  return true;
+}
+
+} // namespace uv_unwrap

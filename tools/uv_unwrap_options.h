@@ -1,0 +1,62 @@
+// The command line of uv_unwrap (parsed with CLI11 in uv_unwrap_options.cpp)
+// and the exception that carries every failure to one line on stderr.
+#ifndef CUT_PARAM_TOOLS_UV_UNWRAP_OPTIONS_H
+#define CUT_PARAM_TOOLS_UV_UNWRAP_OPTIONS_H
+
+#include "preview/preview.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace uv_unwrap {
+
+// Any failure the user should read about: main prints it as one line.
+// `status` goes to the statistics (ERROR_USAGE for command-line mistakes).
+struct Failure : std::runtime_error
+{
+  explicit Failure(const std::string& message, std::string status_ = "ERROR_USAGE")
+    : std::runtime_error(message), status(std::move(status_)) {}
+  std::string status;
+};
+
+struct Options
+{
+  std::vector<std::string> inputs; // files and directories; empty: the built-in default mesh
+  std::string output;         // one input only; empty: <input stem>_uv.<ext> in output_dir
+  std::string output_dir;     // empty: the current directory
+  std::string output_format;  // obj, ply, gltf or glb; empty: the input's (obj for off and stl)
+  std::string stats;          // one input only
+  std::string jsonl;          // one line of statistics per input ("-": stdout)
+  std::string svg, png, v_field; // pictures, written by tools/preview
+  Preview_camera camera;         // of the PNG; y up unless --up
+  double lambda = 1.;
+  double epsilon_start = 0.1;
+  double epsilon_end = 0.01;
+  int iterations = 3;
+  int passes = 1;
+  // atlas
+  bool allow_overlaps = false;   // global_injectivity(false)
+  bool world_units = false;
+  int texture_size = 1024;
+  double padding = 2.;           // texels
+  double box_aspect_ratio = 1.;  // width / height of the bounding box
+  double box_stiffness = -1.;    // < 0: gentle (5) for the default square, tight (300) with --box
+  bool box_given = false;
+  double box_distortion_budget = 0.; // set by parse_arguments (infinite once the box is asked for)
+  bool quiet = false;
+};
+
+// ".obj", ".off", ".ply" or ".stl" (lower case): the files taken from a
+// directory given as input.
+bool is_mesh_extension(const std::string& extension);
+
+// Fills `options` from the command line. Returns false when the program
+// should stop successfully (--help, after printing the help); throws Failure
+// on a mistake (unknown option, missing or invalid value). Directories
+// among the inputs are replaced by their mesh files.
+bool parse_arguments(int argc, char** argv, Options& options);
+
+} // namespace uv_unwrap
+
+#endif
