@@ -2,8 +2,11 @@
 
 #include "text_parsing.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 namespace cut_benchmark {
 
@@ -16,178 +19,133 @@ fs::path project_root()
 #endif
 }
 
-void print_usage(const char* program, std::ostream& os)
+namespace {
+
+// "W:H", both positive numbers: the aspect ratio W / H.
+bool parse_aspect_ratio(const std::string& text, double& ratio)
 {
-  os << "Usage: " << program << " [options]\n"
-     << "       " << program << " --scaling [--max-faces N] [--time-limit S] [--repeat N] [--json FILE]\n"
-     << "Runs cut_and_parameterize() on a list of meshes and compares with the reference\n"
-     << "implementation's measured figures and the paper's Table 1.\n\n"
-     << "Options:\n"
-     << "  --meshes a,b,c      mesh names (file stems, e.g. cat,venus; or paths relative to\n"
-     << "                      the mesh folder, e.g. optcuts/cat.obj). Default: every mesh named\n"
-     << "                      in the reference tables that exists in the mesh folder\n"
-     << "  --mesh-dir DIR      mesh folder (holding uvat/ and optcuts/); default\n"
-     << "                      ../shared/meshes relative to the project root\n"
-     << "  --reference-dir DIR folder of uvat_reference_measured.csv and paper_table1.csv;\n"
-     << "                      default ../shared/reference relative to the project root\n"
-     << "  --lambda X          seam cost lambda (library default if not given)\n"
-     << "  --passes N          number of passes (library default if not given)\n"
-     << "  --box W:H           tight bounding box of aspect ratio W/H (default: the library's\n"
-     << "                      gentle square)\n"
-     << "  --box-stiffness S   how hard the box pulls, >= 0 (0: no box; library default if not given)\n"
-     << "  --multiresolution-faces N  cuts decided on a copy simplified to N faces for meshes\n"
-     << "                      of more than 2N (0: full resolution; library default if not given)\n"
-     << "  --allow-overlaps    global_injectivity(false): no scaffold (with --box-stiffness 0, the\n"
-     << "                      map as it was before the atlas work, only packed)\n"
-     << "  --repeat N          runs per mesh; the time reported is their median (default 1;\n"
-     << "                      with --scaling 3, for meshes up to " << SCALING_REPEAT_MAX_FACES
-     << " faces)\n"
-     << "  --csv FILE          also write the table as CSV\n"
-     << "  --quick             only meshes with fewer than " << QUICK_MAX_FACES << " faces\n"
-     << "  --help              this text\n\n"
-     << "Scaling run (--scaling): time, memory and where the time goes, as the mesh grows.\n"
-     << "Meshes: optcuts/bimba_i_f10000.obj of the mesh folder, refined by 1-to-4 midpoint\n"
-     << "subdivision to 4, 16 and 64 times its faces, and CGAL's meshes/refined_elephant.off\n"
-     << "(CGAL_DATA_DIR, else the data/ folder next to the build's bin/; left out if absent).\n"
-     << "Library defaults; each run in its own child process (peak memory: its maximum\n"
-     << "resident set size). Per mesh: total time and its phases, Newton iterations,\n"
-     << "Cholesky factorizations, peak memory, E_d, E_s, charts.\n"
-     << "  --scaling           run the scaling benchmark instead of the comparison\n"
-     << "  --max-faces N       leave out meshes of more than N faces (default: none left out)\n"
-     << "  --time-limit S      seconds a run may take before it is killed (default "
-     << SCALING_DEFAULT_TIME_LIMIT << ")\n"
-     << "  --json FILE         also write the table as JSON\n"
-     << "  (--mesh-dir and --repeat apply too; the other options do not)\n";
+  const std::size_t colon = text.find(':');
+  double w = 0., h = 0.;
+  if(colon == std::string::npos || !parse_double(text.substr(0, colon), w) ||
+     !parse_double(text.substr(colon + 1), h) || !(w > 0.) || !(h > 0.))
+    return false;
+  ratio = w / h;
+  return std::isfinite(ratio) && ratio > 0.;
 }
+
+const char* const description =
+  "Runs cut_and_parameterize() on a list of meshes and compares with the reference\n"
+  "implementation's measured figures and the paper's Table 1.\n\n"
+  "Scaling run (--scaling): time, memory and where the time goes, as the mesh grows.\n"
+  "Meshes: optcuts/bimba_i_f10000.obj of the mesh folder, refined by 1-to-4 midpoint\n"
+  "subdivision to 4, 16 and 64 times its faces, and CGAL's meshes/refined_elephant.off\n"
+  "(CGAL_DATA_DIR, else the data/ folder next to the build's bin/; left out if absent).\n"
+  "Library defaults; each run in its own child process (peak memory: its maximum\n"
+  "resident set size). Per mesh: total time and its phases, Newton iterations,\n"
+  "Cholesky factorizations, peak memory, E_d, E_s, charts.";
+
+} // namespace
 
 int parse_options(int argc, char** argv, Options& opt)
 {
   opt.mesh_dir = project_root() / ".." / "shared" / "meshes";
   opt.reference_dir = project_root() / ".." / "shared" / "reference";
-  std::vector<std::string> comparison_only, scaling_only; // options given
-  for(int i = 1; i < argc; ++i)
+  CLI::App app(description, "benchmark_cut_parameterization");
+  app.get_formatter()->column_width(30);
+  const auto positive = CLI::PositiveNumber & CLI::Validator(
+    [](std::string& v) { double x; return parse_double(v, x) && std::isfinite(x) ? std::string() : "not finite"; }, "");
+
+  // options of the comparison (default mode) and of the scaling run
+  const std::string comparison = "Comparison (default mode)", scaling = "Scaling run (--scaling)";
+  std::vector<CLI::Option*> comparison_only, scaling_only;
+  std::string meshes;
+  comparison_only.push_back(
+    app.add_option("--meshes", meshes,
+                   "mesh names (file stems, e.g. cat,venus; or paths relative to\n"
+                   "the mesh folder, e.g. optcuts/cat.obj). Default: every mesh named\n"
+                   "in the reference tables that exists in the mesh folder")
+      ->type_name("A,B,C")->group(comparison));
+  app.add_option("--mesh-dir", opt.mesh_dir, "mesh folder (holding uvat/ and optcuts/); default\n"
+                                             "../shared/meshes relative to the project root")
+    ->type_name("DIR");
+  comparison_only.push_back(
+    app.add_option("--reference-dir", opt.reference_dir,
+                   "folder of uvat_reference_measured.csv and paper_table1.csv;\n"
+                   "default ../shared/reference relative to the project root")
+      ->type_name("DIR")->group(comparison));
+  comparison_only.push_back(app.add_option("--lambda", opt.lambda, "seam cost lambda (library default if not given)")
+                              ->type_name("X")->check(positive)->group(comparison));
+  comparison_only.push_back(app.add_option("--passes", opt.passes, "number of passes (library default if not given)")
+                              ->type_name("N")->check(CLI::NonNegativeNumber)->group(comparison));
+  comparison_only.push_back(
+    app.add_option_function<std::string>("--box", [&opt](const std::string& v) {
+        double ratio = 1.;
+        parse_aspect_ratio(v, ratio);
+        opt.box = ratio;
+      }, "tight bounding box of aspect ratio W/H (default: the library's\ngentle square)")
+      ->type_name("W:H")
+      ->check(CLI::Validator([](std::string& v) {
+          double ratio;
+          return parse_aspect_ratio(v, ratio) ? std::string() : "expected W:H, two positive numbers, got '" + v + "'";
+        }, ""))
+      ->group(comparison));
+  comparison_only.push_back(
+    app.add_option("--box-stiffness", opt.box_stiffness,
+                   "how hard the box pulls, >= 0 (0: no box; library default if not given)")
+      ->type_name("S")->check(CLI::NonNegativeNumber)->group(comparison));
+  app.add_option("--multiresolution-faces", opt.multiresolution_faces,
+                 "cuts decided on a copy simplified to N faces for meshes\n"
+                 "of more than 2N (0: full resolution; library default if not given)")
+    ->type_name("N")->check(CLI::NonNegativeNumber);
+  comparison_only.push_back(
+    app.add_flag("--allow-overlaps", opt.allow_overlaps,
+                 "global_injectivity(false): no scaffold (with --box-stiffness 0, the\n"
+                 "map as it was before the atlas work, only packed)")->group(comparison));
+  app.add_option("--repeat", opt.repeat,
+                 "runs per mesh; the time reported is their median (default 1;\n"
+                 "with --scaling 3, for meshes up to " + std::to_string(SCALING_REPEAT_MAX_FACES) + " faces)")
+    ->type_name("N")->check(CLI::PositiveNumber);
+  comparison_only.push_back(app.add_option("--csv", opt.csv_file, "also write the table as CSV")
+                              ->type_name("FILE")->group(comparison));
+  comparison_only.push_back(
+    app.add_flag("--quick", opt.quick, "only meshes with fewer than " + std::to_string(QUICK_MAX_FACES) + " faces")
+      ->group(comparison));
+
+  app.add_flag("--scaling", opt.scaling, "run the scaling benchmark instead of the comparison")->group(scaling);
+  scaling_only.push_back(app.add_option("--max-faces", opt.max_faces,
+                                        "leave out meshes of more than N faces (default: none left out)")
+                           ->type_name("N")->check(CLI::PositiveNumber)->group(scaling));
+  std::ostringstream limit;
+  limit << SCALING_DEFAULT_TIME_LIMIT;
+  scaling_only.push_back(app.add_option("--time-limit", opt.time_limit,
+                                        "seconds a run may take before it is killed (default " + limit.str() + ")")
+                           ->type_name("S")->check(positive)->group(scaling));
+  scaling_only.push_back(app.add_option("--json", opt.json_file, "also write the table as JSON")
+                           ->type_name("FILE")->group(scaling));
+
+  try
   {
-    const std::string arg = argv[i];
-    auto value = [&](std::string& out) {
-      if(i + 1 >= argc) { std::cerr << "error: " << arg << " needs a value\n"; return false; }
-      out = argv[++i];
-      return true;
-    };
-    std::string v;
-    if(arg == "--help" || arg == "-h") { print_usage(argv[0], std::cout); return 1; }
-    else if(arg == "--quick") { opt.quick = true; comparison_only.push_back(arg); }
-    else if(arg == "--meshes")
+    app.parse(argc, argv);
+  }
+  catch(const CLI::CallForHelp& e)
+  {
+    app.exit(e);
+    return 1;
+  }
+  catch(const CLI::ParseError& e)
+  {
+    std::cerr << "error: " << e.what() << " (see --help)\n";
+    return 2;
+  }
+  for(const auto& name : split(meshes, ','))
+    if(!trim(name).empty()) opt.meshes.push_back(trim(name));
+  if(app.count("--meshes") && opt.meshes.empty()) { std::cerr << "error: --meshes: empty list\n"; return 2; }
+  for(CLI::Option* o : opt.scaling ? comparison_only : scaling_only)
+    if(o->count() > 0)
     {
-      if(!value(v)) return 2;
-      for(const auto& name : split(v, ','))
-        if(!trim(name).empty()) opt.meshes.push_back(trim(name));
-      if(opt.meshes.empty()) { std::cerr << "error: --meshes: empty list\n"; return 2; }
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--mesh-dir") { if(!value(v)) return 2; opt.mesh_dir = v; }
-    else if(arg == "--reference-dir")
-    {
-      if(!value(v)) return 2;
-      opt.reference_dir = v;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--csv") { if(!value(v)) return 2; opt.csv_file = v; comparison_only.push_back(arg); }
-    else if(arg == "--lambda")
-    {
-      double x;
-      if(!value(v)) return 2;
-      if(!parse_double(v, x) || !(x > 0.) || !std::isfinite(x))
-      { std::cerr << "error: --lambda: expected a positive number, got '" << v << "'\n"; return 2; }
-      opt.lambda = x;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--box")
-    {
-      double w, h;
-      if(!value(v)) return 2;
-      const std::size_t colon = v.find(':');
-      if(colon == std::string::npos || !parse_double(v.substr(0, colon), w) || !parse_double(v.substr(colon + 1), h) ||
-         !(w > 0.) || !(h > 0.) || !std::isfinite(w / h))
-      { std::cerr << "error: --box: expected W:H, two positive numbers, got '" << v << "'\n"; return 2; }
-      opt.box = w / h;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--box-stiffness")
-    {
-      double x;
-      if(!value(v)) return 2;
-      if(!parse_double(v, x) || !(x >= 0.) || !std::isfinite(x))
-      { std::cerr << "error: --box-stiffness: expected a number >= 0, got '" << v << "'\n"; return 2; }
-      opt.box_stiffness = x;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--passes")
-    {
-      int n;
-      if(!value(v)) return 2;
-      if(!parse_int(v, n) || n < 0)
-      { std::cerr << "error: --passes: expected a non-negative integer, got '" << v << "'\n"; return 2; }
-      opt.passes = n;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--multiresolution-faces")
-    {
-      int n;
-      if(!value(v)) return 2;
-      if(!parse_int(v, n) || n < 0)
-      { std::cerr << "error: --multiresolution-faces: expected an integer >= 0, got '" << v << "'\n"; return 2; }
-      opt.multiresolution_faces = n;
-    }
-    else if(arg == "--allow-overlaps")
-    {
-      opt.allow_overlaps = true;
-      comparison_only.push_back(arg);
-    }
-    else if(arg == "--repeat")
-    {
-      int n;
-      if(!value(v)) return 2;
-      if(!parse_int(v, n) || n < 1)
-      { std::cerr << "error: --repeat: expected a positive integer, got '" << v << "'\n"; return 2; }
-      opt.repeat = n;
-    }
-    else if(arg == "--scaling") opt.scaling = true;
-    else if(arg == "--max-faces")
-    {
-      int n;
-      if(!value(v)) return 2;
-      if(!parse_int(v, n) || n < 1)
-      { std::cerr << "error: --max-faces: expected a positive integer, got '" << v << "'\n"; return 2; }
-      opt.max_faces = std::size_t(n);
-      scaling_only.push_back(arg);
-    }
-    else if(arg == "--time-limit")
-    {
-      double x;
-      if(!value(v)) return 2;
-      if(!parse_double(v, x) || !(x > 0.) || !std::isfinite(x))
-      { std::cerr << "error: --time-limit: expected a positive number of seconds, got '" << v << "'\n"; return 2; }
-      opt.time_limit = x;
-      scaling_only.push_back(arg);
-    }
-    else if(arg == "--json") { if(!value(v)) return 2; opt.json_file = v; scaling_only.push_back(arg); }
-    else
-    {
-      std::cerr << "error: unknown option '" << arg << "'\n";
-      print_usage(argv[0], std::cerr);
+      std::cerr << "error: " << o->get_name() << (opt.scaling ? " does not apply to --scaling\n" : " needs --scaling\n");
       return 2;
     }
-  }
-  if(opt.scaling && !comparison_only.empty())
-  {
-    std::cerr << "error: " << comparison_only.front() << " does not apply to --scaling\n";
-    return 2;
-  }
-  if(!opt.scaling && !scaling_only.empty())
-  {
-    std::cerr << "error: " << scaling_only.front() << " needs --scaling\n";
-    return 2;
-  }
   return 0;
 }
 

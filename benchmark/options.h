@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <filesystem>
-#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,8 +47,6 @@ struct Options
 
 /// The project's root as seen when the benchmark was configured ("." if unknown).
 fs::path project_root();
-
-void print_usage(const char* program, std::ostream& os);
 
 /// Returns 0 to run, 1 to exit with success (--help), 2 on a usage error
 /// (reported on std::cerr).

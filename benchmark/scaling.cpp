@@ -6,7 +6,6 @@
 #include "table_output.h"
 
 #include "child_process.h" // tools/
-#include "json_text.h"     // tools/
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/config.h>
@@ -14,7 +13,10 @@
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -35,8 +37,6 @@ namespace cut_benchmark {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using cut_tools::Child_result;
-using cut_tools::json_number;
-using cut_tools::json_string;
 using cut_tools::run_forked;
 
 namespace {
@@ -324,49 +324,50 @@ const char* tbb_name()
 
 bool write_json(const Options& opt, const std::vector<Scaling_row>& rows)
 {
-  std::ofstream out(opt.json_file);
-  out << "{\n"
-      << "  \"benchmark\": \"scaling\",\n"
-      << "  \"hardware_concurrency\": " << std::thread::hardware_concurrency() << ",\n"
-      << "  \"tbb\": " << (std::strcmp(tbb_name(), "on") == 0 ? "true" : "false") << ",\n"
-      << "  \"cholesky\": " << json_string(cholesky_name()) << ",\n"
-      << "  \"time_limit_s\": " << json_number(opt.time_limit) << ",\n"
-      << "  \"repeat\": " << opt.repeat_count() << ",\n"
-      << "  \"repeat_max_faces\": " << SCALING_REPEAT_MAX_FACES << ",\n"
-      << "  \"max_faces\": " << (opt.max_faces ? std::to_string(*opt.max_faces) : std::string("null")) << ",\n"
-      << "  \"rows\": [";
-  for(std::size_t i = 0; i < rows.size(); ++i)
+  using nlohmann::ordered_json;
+  const auto number = [](double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(); };
+  ordered_json j;
+  j["benchmark"] = "scaling";
+  j["hardware_concurrency"] = std::thread::hardware_concurrency();
+  j["tbb"] = std::strcmp(tbb_name(), "on") == 0;
+  j["cholesky"] = cholesky_name();
+  j["time_limit_s"] = number(opt.time_limit);
+  j["repeat"] = opt.repeat_count();
+  j["repeat_max_faces"] = SCALING_REPEAT_MAX_FACES;
+  j["max_faces"] = opt.max_faces ? ordered_json(*opt.max_faces) : ordered_json();
+  j["rows"] = ordered_json::array();
+  for(const Scaling_row& row : rows)
   {
-    const Scaling_row& row = rows[i];
     const bool ran = !row.runs.empty();
     const Run_measure* first = ran ? &row.runs.front() : nullptr;
-    auto time = [&](double t) { return ran ? json_number(t) : std::string("null"); };
-    auto count = [&](std::size_t n) { return row.ok ? std::to_string(n) : std::string("null"); };
-    out << (i ? ",\n    {\n" : "\n    {\n")
-        << "      \"mesh\": " << json_string(row.mesh.name) << ",\n"
-        << "      \"source\": " << json_string(row.mesh.source) << ",\n"
-        << "      \"subdivisions\": " << row.mesh.subdivisions << ",\n"
-        << "      \"faces\": " << row.mesh.faces << ",\n"
-        << "      \"runs\": " << row.runs.size() << ",\n"
-        << "      \"status\": " << json_string(row.status) << ",\n"
-        << "      \"over_time_limit\": " << (row.over_limit ? "true" : "false") << ",\n"
-        << "      \"total_s\": " << time(row.time.total) << ",\n"
-        << "      \"initialization_s\": " << time(row.time.initialization) << ",\n"
-        << "      \"u_steps_s\": " << time(row.time.u_steps) << ",\n"
-        << "      \"v_steps_s\": " << time(row.time.v_steps) << ",\n"
-        << "      \"cut_extraction_s\": " << time(row.time.cut_extraction) << ",\n"
-        << "      \"final_solve_s\": " << time(row.time.final_solve) << ",\n"
-        << "      \"packing_s\": " << time(row.time.packing) << ",\n"
-        << "      \"newton_iterations\": " << count(first ? first->newton_iterations : 0) << ",\n"
-        << "      \"factorizations\": " << count(first ? first->factorizations : 0) << ",\n"
-        << "      \"peak_memory_mb\": " << (ran ? json_number(row.peak_mb) : std::string("null")) << ",\n"
-        << "      \"E_d\": " << (row.ok ? json_number(first->distortion) : std::string("null")) << ",\n"
-        << "      \"E_s\": " << (row.ok ? json_number(first->seam_length) : std::string("null")) << ",\n"
-        << "      \"charts\": " << count(first ? first->charts : 0) << "\n"
-        << "    }";
+    // null where nothing was measured
+    const auto time = [&](double t) { return ran ? number(t) : ordered_json(); };
+    const auto count = [&](std::size_t n) { return row.ok ? ordered_json(n) : ordered_json(); };
+    ordered_json r;
+    r["mesh"] = row.mesh.name;
+    r["source"] = row.mesh.source;
+    r["subdivisions"] = row.mesh.subdivisions;
+    r["faces"] = row.mesh.faces;
+    r["runs"] = row.runs.size();
+    r["status"] = row.status;
+    r["over_time_limit"] = row.over_limit;
+    r["total_s"] = time(row.time.total);
+    r["initialization_s"] = time(row.time.initialization);
+    r["u_steps_s"] = time(row.time.u_steps);
+    r["v_steps_s"] = time(row.time.v_steps);
+    r["cut_extraction_s"] = time(row.time.cut_extraction);
+    r["final_solve_s"] = time(row.time.final_solve);
+    r["packing_s"] = time(row.time.packing);
+    r["newton_iterations"] = count(first ? first->newton_iterations : 0);
+    r["factorizations"] = count(first ? first->factorizations : 0);
+    r["peak_memory_mb"] = ran ? number(row.peak_mb) : ordered_json();
+    r["E_d"] = row.ok ? number(first->distortion) : ordered_json();
+    r["E_s"] = row.ok ? number(first->seam_length) : ordered_json();
+    r["charts"] = count(first ? first->charts : 0);
+    j["rows"].push_back(r);
   }
-  out << (rows.empty() ? "" : "\n  ") << "]\n"
-      << "}\n";
+  std::ofstream out(opt.json_file);
+  out << j.dump(2) << '\n';
   out.close();
   return bool(out);
 }

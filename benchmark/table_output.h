@@ -1,5 +1,5 @@
 // How the benchmark writes its results: numbers as text, an aligned text
-// table and fields of CSV files (JSON literals: tools/json_text.h).
+// table and fields of CSV files (the JSON of --scaling: nlohmann-json, in scaling.cpp).
 #ifndef CUT_PARAM_BENCHMARK_TABLE_OUTPUT_H
 #define CUT_PARAM_BENCHMARK_TABLE_OUTPUT_H
 

@@ -25,6 +25,9 @@
 #include "child_process.h"
 #include "mesh_input.h"
 
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 
 #include <algorithm>
@@ -66,9 +69,7 @@ struct Options
   std::size_t shard = 0, shards = 1; // this run checks the meshes i with i % shards == shard
 };
 
-const char* const usage_text =
-  "usage: check_all_meshes --uv-unwrap PATH [options] DIR_OR_FILE... [-- UV_UNWRAP_OPTIONS...]\n"
-  "\n"
+const char* const description =
   "Runs uv_unwrap on every .off, .obj, .ply and .stl file (directories are\n"
   "searched recursively) and checks each result: a documented error or a\n"
   "valid UV map (finite, flip-free, same vertices and faces as the input) that\n"
@@ -76,18 +77,7 @@ const char* const usage_text =
   "statistics; not checked with --allow-overlaps after --) and every UV in\n"
   "[0,1] (not checked with --world-units after --).\n"
   "Exits with 1 on any crash, hang, NaN, flipped face, overlap, UV outside\n"
-  "[0,1] or broken contract.\n"
-  "\n"
-  "options:\n"
-  "  --uv-unwrap PATH     the uv_unwrap executable (required)\n"
-  "  --max-faces N        skip meshes with more than N faces (default 0: no limit)\n"
-  "  --timeout S          time limit per run of uv_unwrap, in seconds (default 300)\n"
-  "  --repeat-faces N     unwrap meshes with at most N faces twice and compare the\n"
-  "                       outputs byte for byte (default 20000; 0: never)\n"
-  "  --work-dir DIR       scratch directory (default: a new one in the temp directory)\n"
-  "  --shard K/N          check only the meshes K, K+N, K+2N, ... (0 <= K < N) of the\n"
-  "                       sorted list, so that N runs share the work (default 0/1)\n"
-  "  -- ARGS...           passed to uv_unwrap after its own arguments\n";
+  "[0,1] or broken contract. Arguments after -- are passed to uv_unwrap.";
 
 // ---------------------------------------------------------------- children
 
@@ -112,45 +102,6 @@ std::string read_file(const std::string& filename)
 {
   std::ifstream in(filename, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-// Value of "key" in the flat JSON uv_unwrap writes: the raw text of a
-// number, null, or the unescaped content of a string. Empty if absent.
-std::string json_value(const std::string& json, const std::string& key)
-{
-  const std::string tag = "\"" + key + "\":";
-  std::size_t p = json.find(tag);
-  if(p == std::string::npos) return {};
-  p += tag.size();
-  while(p < json.size() && json[p] == ' ') ++p;
-  if(p < json.size() && json[p] == '"')
-  {
-    std::string s;
-    for(++p; p < json.size() && json[p] != '"'; ++p)
-    {
-      if(json[p] == '\\' && p + 1 < json.size()) ++p;
-      s += json[p];
-    }
-    return s;
-  }
-  const std::size_t end = json.find_first_of(",\n}", p);
-  return json.substr(p, end == std::string::npos ? std::string::npos : end - p);
-}
-
-std::size_t json_array_size(const std::string& json, const std::string& key)
-{
-  const std::size_t p = json.find("\"" + key + "\": [");
-  if(p == std::string::npos) return 0;
-  const std::size_t end = json.find(']', p);
-  const std::string body = json.substr(p, end - p);
-  std::size_t n = 0;
-  bool in_string = false;
-  for(std::size_t i = body.find('[') + 1; i < body.size(); ++i)
-  {
-    if(body[i] == '\\') { ++i; continue; }
-    if(body[i] == '"') { if(!in_string) ++n; in_string = !in_string; }
-  }
-  return n;
 }
 
 bool is_mesh_file(const fs::path& p)
@@ -268,8 +219,16 @@ std::string verify(const std::string& input, const std::string& obj_file, bool u
     }
   }
 
+  // The faces in the order uv_unwrap writes them: the mesh's, except for an
+  // OBJ read without repair, whose output keeps the file's face order (the
+  // triangles of a polygon in its place; tools/mesh_output.h).
+  std::vector<mesh_input::Mesh::Face_index> order(faces(mesh).begin(), faces(mesh).end());
+  if(mesh_input::detail::lower_extension(input) == "obj" && !report.face_origin.empty())
+    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+      return report.face_origin[std::size_t(a)] < report.face_origin[std::size_t(b)];
+    });
   std::size_t k = 0, flipped = 0, first_flipped = 0;
-  for(auto fd : faces(mesh))
+  for(auto fd : order)
   {
     const auto& corners = f[k];
     if(corners.size() != 3) return "FAIL OUTPUT: face " + std::to_string(k) + " is not a triangle";
@@ -301,12 +260,27 @@ struct Row
   std::string mesh, faces = "-", status, time = "-", distortion = "-", seam = "-", charts = "-", warnings = "-";
 };
 
-std::string fixed(const std::string& number, int digits)
+std::string fixed(double number, int digits)
 {
-  if(number.empty() || number == "null") return number.empty() ? "-" : "null";
   std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << std::strtod(number.c_str(), nullptr);
+  out << std::fixed << std::setprecision(digits) << number;
   return out.str();
+}
+
+// A number of uv_unwrap's statistics: "-" if absent, "null" if null.
+std::string fixed(const nlohmann::json& stats, const char* key, int digits)
+{
+  if(!stats.contains(key)) return "-";
+  const nlohmann::json& value = stats[key];
+  return value.is_number() ? fixed(value.get<double>(), digits) : std::string("null");
+}
+
+// The statistics uv_unwrap wrote (an empty object if none or unreadable).
+nlohmann::json read_statistics(const std::string& filename)
+{
+  std::ifstream in(filename);
+  nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  return stats.is_object() ? stats : nlohmann::json::object();
 }
 
 void print_row(const Row& r)
@@ -318,55 +292,58 @@ void print_row(const Row& r)
 
 bool parse_arguments(int argc, char** argv, Options& options)
 {
+  // everything after "--" belongs to uv_unwrap
+  int own = argc;
   for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--") { own = i; break; }
+  if(own < argc) options.uv_unwrap_args.assign(argv + own + 1, argv + argc);
+
+  CLI::App app(description, "check_all_meshes");
+  app.add_option("--uv-unwrap", options.uv_unwrap, "the uv_unwrap executable")->type_name("PATH")->required();
+  app.add_option("--max-faces", options.max_faces, "skip meshes with more than N faces (default 0: no limit)")
+    ->type_name("N");
+  app.add_option("--timeout", options.timeout, "time limit per run of uv_unwrap, in seconds (default 300)")
+    ->type_name("S")->check(CLI::PositiveNumber);
+  app.add_option("--repeat-faces", options.repeat_faces,
+                 "unwrap meshes with at most N faces twice and compare the\n"
+                 "outputs byte for byte (default 20000; 0: never)")->type_name("N");
+  app.add_option("--work-dir", options.work_dir, "scratch directory (default: a new one in the temp directory)")
+    ->type_name("DIR");
+  app.add_option_function<std::string>("--shard",
+      [&options](const std::string& v) {
+        const std::size_t slash = v.find('/');
+        options.shard = std::stoul(v.substr(0, slash));
+        options.shards = std::stoul(v.substr(slash + 1));
+      },
+      "check only the meshes K, K+N, K+2N, ... (0 <= K < N) of the\n"
+      "sorted list, so that N runs share the work (default 0/1)")
+    ->type_name("K/N")
+    ->check(CLI::Validator(
+        [](std::string& v) -> std::string {
+          const std::size_t slash = v.find('/');
+          const bool digits = slash != std::string::npos && slash > 0 && slash + 1 < v.size() &&
+                              v.find_first_not_of("0123456789/") == std::string::npos &&
+                              v.find('/', slash + 1) == std::string::npos && v.size() < 16;
+          if(!digits || std::stoul(v.substr(slash + 1)) < 1 ||
+             std::stoul(v.substr(0, slash)) >= std::stoul(v.substr(slash + 1)))
+            return "invalid value '" + v + "' (expected K/N with 0 <= K < N)";
+          return {};
+        },
+        ""));
+  app.add_option("INPUT", options.inputs, "mesh files and directories")->type_name("DIR_OR_FILE")->required();
+  try
   {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw std::runtime_error("option " + arg + " needs a value");
-      return argv[++i];
-    };
-    auto count = [&]() -> std::size_t {
-      const std::string v = value();
-      char* end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if(end == v.c_str() || *end || !(x >= 0.) || x != std::floor(x))
-        throw std::runtime_error("invalid value '" + v + "' for " + arg);
-      return std::size_t(x);
-    };
-    if(arg == "-h" || arg == "--help") { std::cout << usage_text; return false; }
-    else if(arg == "--uv-unwrap") options.uv_unwrap = value();
-    else if(arg == "--max-faces") options.max_faces = count();
-    else if(arg == "--repeat-faces") options.repeat_faces = count();
-    else if(arg == "--timeout") options.timeout = double(count());
-    else if(arg == "--work-dir") options.work_dir = value();
-    else if(arg == "--shard")
-    {
-      const std::string v = value();
-      std::size_t slash = v.find('/'), k = 0, n = 0;
-      char* end = nullptr;
-      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < v.size()
-                && v.find_first_not_of("0123456789/") == std::string::npos;
-      if(ok)
-      {
-        k = std::strtoul(v.c_str(), &end, 10);
-        n = std::strtoul(v.c_str() + slash + 1, &end, 10);
-        ok = *end == 0 && n >= 1 && k < n;
-      }
-      if(!ok) throw std::runtime_error("invalid value '" + v + "' for --shard (K/N with 0 <= K < N)");
-      options.shard = k;
-      options.shards = n;
-    }
-    else if(arg == "--")
-    {
-      options.uv_unwrap_args.assign(argv + i + 1, argv + argc);
-      break;
-    }
-    else if(arg.size() > 1 && arg[0] == '-') throw std::runtime_error("unknown option '" + arg + "'");
-    else options.inputs.push_back(arg);
+    app.parse(own, argv);
   }
-  if(options.uv_unwrap.empty()) throw std::runtime_error("--uv-unwrap PATH is required");
-  if(options.inputs.empty()) throw std::runtime_error("no mesh file or directory given");
-  if(!(options.timeout > 0.)) throw std::runtime_error("--timeout must be positive");
+  catch(const CLI::CallForHelp& e)
+  {
+    app.exit(e);
+    return false;
+  }
+  catch(const CLI::ParseError& e)
+  {
+    throw std::runtime_error(e.what());
+  }
   return true;
 }
 
@@ -480,16 +457,16 @@ int run(const Options& options)
     std::vector<std::string> args = {exe, file, "-q", "-o", obj, "--stats", json};
     args.insert(args.end(), options.uv_unwrap_args.begin(), options.uv_unwrap_args.end());
     const Child_result u = run_program(args, log, options.timeout);
-    row.time = fixed(std::to_string(u.seconds), 1);
+    row.time = fixed(u.seconds, 1);
     total_time += u.seconds;
-    const std::string stats = read_file(json);
-    const std::string status = json_value(stats, "status");
-    if(!stats.empty() && status == "ok")
+    const nlohmann::json stats = read_statistics(json);
+    const std::string status = stats.value("status", std::string());
+    if(status == "ok")
     {
-      row.distortion = fixed(json_value(stats, "distortion"), 3);
-      row.seam = fixed(json_value(stats, "seam_length"), 2);
-      row.charts = json_value(stats, "charts");
-      row.warnings = std::to_string(json_array_size(stats, "warnings"));
+      row.distortion = fixed(stats, "distortion", 3);
+      row.seam = fixed(stats, "seam_length", 2);
+      row.charts = stats.contains("charts") ? stats["charts"].dump() : "-";
+      row.warnings = stats.contains("warnings") ? std::to_string(stats["warnings"].size()) : "-";
     }
     std::string last_line = read_file(log);
     while(!last_line.empty() && last_line.back() == '\n') last_line.pop_back();
@@ -541,7 +518,7 @@ int run(const Options& options)
     // 4. overlaps: uv_unwrap's recount on its output
     if(check_overlaps)
     {
-      const std::string crossings = json_value(stats, "border_crossings");
+      const std::string crossings = stats.contains("border_crossings") ? stats["border_crossings"].dump() : "";
       if(crossings.empty())
       {
         problem("OUTPUT", "no border_crossings in the statistics");
