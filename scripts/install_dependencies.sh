@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those missing.
 # Used by setup.sh and test.sh; safe to run again (does nothing then).
-# libcli11-dev, nlohmann-json3-dev, libgtest-dev: command lines, JSON, tests.
+# libcli11-dev, nlohmann-json3-dev, libtinygltf-dev, libgtest-dev: command lines,
+# JSON, glTF, tests.
 # libopenblas0-pthread: the BLAS behind CHOLMOD on large meshes (Debian's
 # reference BLAS would make its supernodal factorization several times slower).
 set -euo pipefail
 
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libmetis-dev libtbb-dev
-          libopenblas0-pthread libcgal-demo libstb-dev doxygen libcli11-dev nlohmann-json3-dev libgtest-dev)
+          libopenblas0-pthread libcgal-demo libstb-dev doxygen libcli11-dev nlohmann-json3-dev libgtest-dev
+          libtinygltf-dev)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   echo "install_dependencies: not a Debian-like system; install these yourself: ${packages[*]}" >&2

@@ -5,12 +5,16 @@
 // (tools/preview). By default the result is a texture atlas: charts free of
 // overlap, packed into the unit square with a padding in texels.
 #include "blas_threads.h"
+#include "gltf_io.h"
 #include "mesh_input.h"
 #include "mesh_output.h"
 #include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
@@ -256,6 +260,12 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
 
 // ---------------------------------------------------------------- run
 
+bool is_gltf(const std::string& input)
+{
+  const std::string extension = mesh_input::detail::lower_extension(input);
+  return extension == "gltf" || extension == "glb";
+}
+
 // Writes the unwrapped mesh as `format`. An OBJ read without repair keeps
 // the input's other lines (tools/mesh_output.h); other inputs get the
 // library's plain OBJ writer.
@@ -265,6 +275,8 @@ void write_output(const std::string& output, const std::string& format, const st
                   std::vector<std::string>& warnings)
 {
   bool written = false;
+  if(format == "gltf" || format == "glb")
+    throw Failure("glTF output needs a glTF input (for other inputs: .obj or .ply)");
   if(format == "ply")
     written = mesh_output::write_ply_with_texcoords(output, mesh, uvmap);
   else if(mesh_input::detail::lower_extension(input) == "obj" && !report.face_origin.empty())
@@ -299,8 +311,10 @@ std::string output_format(const Options& options, const std::string& input)
   std::string extension = fs::path(from).extension().string();
   for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if(extension == ".ply") return "ply";
+  if(extension == ".gltf") return "gltf";
+  if(extension == ".glb") return "glb";
   if(extension == ".obj" || options.output.empty()) return "obj";
-  throw Failure("cannot tell the format of '" + options.output + "' (give .obj or .ply, or --format)");
+  throw Failure("cannot tell the format of '" + options.output + "' (give .obj, .ply, .gltf or .glb, or --format)");
 }
 
 std::string output_file(const Options& options, const std::string& stem, const std::string& format)
@@ -310,41 +324,11 @@ std::string output_file(const Options& options, const std::string& stem, const s
   return (dir / (stem + "_uv." + format)).string();
 }
 
-void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
+// cut_and_parameterize() with the options; fills the summary's result and
+// the counts measured on the output. Throws Failure if the library fails.
+template <typename SeamMap, typename UVMap, typename VMap>
+void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field, Run_summary& summary)
 {
-  Mesh mesh;
-  mesh_input::Input_report report;
-  std::string stem;
-  if(!input.empty())
-  {
-    summary.input = input;
-    read_mesh(input, mesh, summary.warnings, report);
-    stem = fs::path(input).stem().string();
-  }
-  else if(std::string data_mesh = find_default_mesh(argv0); !data_mesh.empty())
-  {
-    summary.input = data_mesh;
-    read_mesh(data_mesh, mesh, summary.warnings, report);
-    stem = fs::path(data_mesh).stem().string();
-  }
-  else
-  {
-    make_spherical_cap(mesh);
-    summary.input = "built-in spherical cap";
-    stem = "spherical_cap";
-  }
-  const std::string format = output_format(options, input);
-  const std::string output = output_file(options, stem, format);
-  summary.vertices = num_vertices(mesh);
-  summary.faces = num_faces(mesh);
-  if(!options.quiet)
-    std::cout << "uv_unwrap: " << summary.input << ": " << summary.vertices << " vertices, "
-              << summary.faces << " faces" << std::endl;
-
-  auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
-  auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
-
   // Progress goes to stderr so that stdout keeps the summary only.
   std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
     [](const SMP::Cut_and_parameterize_progress& p) {
@@ -389,6 +373,183 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
       const Point_2& uv = uvmap[h];
       if(!(uv.x() >= 0. && uv.x() <= 1. && uv.y() >= 0. && uv.y() <= 1.)) summary.uv_in_unit_square = false;
     }
+
+}
+
+// A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),
+// into its own atlas; the statistics add up the primitives (E_d weighted by
+// area, E_s from the summed seam length and area, as METHOD.md defines them).
+void run_gltf(const Options& options, const std::string& input, const std::string& output, Run_summary& summary)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  gltf_io::Document doc;
+  std::vector<gltf_io::Primitive_ref> primitives;
+  try
+  {
+    gltf_io::load(input, doc);
+    primitives = gltf_io::triangle_primitives(doc);
+  }
+  catch(const gltf_io::Gltf_error& e)
+  {
+    throw Failure(e.what(), "ERROR_CANNOT_READ");
+  }
+  if(primitives.empty()) throw Failure("'" + input + "' has no triangles", "ERROR_EMPTY_MESH");
+
+  double area = 0., seam_length = 0., distortion = 0., initial = 0., coverage = 0.;
+  SMP::Cut_and_parameterize_result& total = summary.result;
+  total = SMP::Cut_and_parameterize_result();
+  summary.uv_in_unit_square = true;
+  for(const gltf_io::Primitive_ref& ref : primitives)
+  {
+    const std::string name = "mesh " + std::to_string(ref.mesh) + ", primitive " + std::to_string(ref.primitive);
+    try
+    {
+      // welded positions first; as the file has it if that is no manifold
+      gltf_io::Triangles t;
+      std::vector<Point_3> points;
+      std::vector<std::vector<std::size_t>> polygons;
+      for(bool weld : {true, false})
+      {
+        t = gltf_io::read_triangles(doc, ref, weld);
+        points.clear();
+        polygons.clear();
+        for(const auto& p : t.points) points.emplace_back(p[0], p[1], p[2]);
+        bool repeated = false;
+        for(const auto& f : t.faces)
+        {
+          polygons.push_back({f[0], f[1], f[2]});
+          repeated = repeated || f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
+        }
+        if(!repeated && PMP::is_polygon_soup_a_polygon_mesh(polygons)) break;
+        polygons.clear();
+      }
+      if(polygons.empty()) throw Failure(name + " is not a manifold triangle mesh", "ERROR_NON_MANIFOLD");
+      Mesh mesh;
+      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+      auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+      auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
+      Run_summary part;
+      part.input = name;
+      if(!options.quiet)
+        std::cout << "uv_unwrap: " << input << ", " << name << ": " << num_vertices(mesh) << " vertices, "
+                  << num_faces(mesh) << " faces" << std::endl;
+      unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
+
+      // the UV of each corner: face i of the mesh is triangle i of the primitive
+      std::vector<std::array<double, 2>> uvs(3 * t.faces.size());
+      for(face_descriptor f : faces(mesh))
+        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+          for(int k = 0; k < 3; ++k)
+            if(std::size_t(target(h, mesh)) == t.faces[std::size_t(f)][std::size_t(k)])
+              uvs[3 * std::size_t(f) + std::size_t(k)] = {uvmap[h].x(), uvmap[h].y()};
+      gltf_io::set_corner_uvs(doc, ref, t, uvs, options.uv_set);
+
+      const double a = PMP::area(mesh);
+      const SMP::Cut_and_parameterize_result& r = part.result;
+      area += a;
+      distortion += a * r.distortion;
+      initial += a * r.initial_distortion;
+      coverage += a * r.uv_coverage;
+      seam_length += r.seam_length * std::sqrt(a / M_PI);
+      summary.vertices += num_vertices(mesh);
+      summary.faces += num_faces(mesh);
+      summary.flipped_faces += part.flipped_faces;
+      summary.border_crossings += part.border_crossings;
+      summary.uv_in_unit_square = summary.uv_in_unit_square && part.uv_in_unit_square;
+      summary.time_seconds += part.time_seconds;
+      total.number_of_charts += r.number_of_charts;
+      total.number_of_seam_edges += r.number_of_seam_edges;
+      total.number_of_degenerate_faces += r.number_of_degenerate_faces;
+      total.newton_iterations += r.newton_iterations;
+      total.number_of_factorizations += r.number_of_factorizations;
+      total.timings.initialization += r.timings.initialization;
+      total.timings.u_steps += r.timings.u_steps;
+      total.timings.v_steps += r.timings.v_steps;
+      total.timings.cut_extraction += r.timings.cut_extraction;
+      total.timings.final_solve += r.timings.final_solve;
+      total.timings.packing += r.timings.packing;
+      total.timings.total += r.timings.total;
+      total.uv_scale = primitives.size() == 1 ? r.uv_scale : std::nan(""); // one per primitive
+    }
+    catch(const gltf_io::Gltf_error& e)
+    {
+      throw Failure(input + ", " + name + ": " + e.what(), "ERROR_CANNOT_READ");
+    }
+    catch(const Failure& e)
+    {
+      throw Failure(input + ", " + name + ": " + e.what(), e.status);
+    }
+  }
+  total.distortion = distortion / area;
+  total.initial_distortion = initial / area;
+  total.uv_coverage = coverage / area;
+  total.seam_length = seam_length / std::sqrt(area / M_PI);
+  for(const std::string& w : doc.warnings)
+  {
+    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    summary.warnings.push_back(w);
+  }
+  try
+  {
+    gltf_io::save(doc, output);
+  }
+  catch(const gltf_io::Gltf_error& e)
+  {
+    throw Failure(e.what(), "ERROR_CANNOT_WRITE");
+  }
+  summary.output = output;
+  if(!options.quiet)
+    std::cout << "  " << primitives.size() << " primitives: charts " << total.number_of_charts << ", E_d "
+              << total.distortion << ", E_s " << total.seam_length << ", flipped faces " << summary.flipped_faces
+              << ", border crossings " << summary.border_crossings << "\n  wrote " << output << std::endl;
+}
+
+void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
+{
+  if(is_gltf(input))
+  {
+    summary.input = input;
+    const std::string stem = fs::path(input).stem().string();
+    const std::string format = output_format(options, input);
+    if(format != "gltf" && format != "glb")
+      throw Failure("a glTF input gives a glTF output (.gltf or .glb), not " + format);
+    run_gltf(options, input, output_file(options, stem, format), summary);
+    return;
+  }
+  Mesh mesh;
+  mesh_input::Input_report report;
+  std::string stem;
+  if(!input.empty())
+  {
+    summary.input = input;
+    read_mesh(input, mesh, summary.warnings, report);
+    stem = fs::path(input).stem().string();
+  }
+  else if(std::string data_mesh = find_default_mesh(argv0); !data_mesh.empty())
+  {
+    summary.input = data_mesh;
+    read_mesh(data_mesh, mesh, summary.warnings, report);
+    stem = fs::path(data_mesh).stem().string();
+  }
+  else
+  {
+    make_spherical_cap(mesh);
+    summary.input = "built-in spherical cap";
+    stem = "spherical_cap";
+  }
+  const std::string format = output_format(options, input);
+  const std::string output = output_file(options, stem, format);
+  summary.vertices = num_vertices(mesh);
+  summary.faces = num_faces(mesh);
+  if(!options.quiet)
+    std::cout << "uv_unwrap: " << summary.input << ": " << summary.vertices << " vertices, "
+              << summary.faces << " faces" << std::endl;
+
+  auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
+  unwrap_mesh(options, mesh, seams, uvmap, v_field, summary);
 
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the

@@ -81,10 +81,11 @@ CLI::Validator count()
 }
 
 const char* const description =
-  "Cuts meshes (OBJ, OFF, PLY or STL) along seams chosen jointly with a\n"
+  "Cuts meshes (OBJ, OFF, PLY, STL, glTF) along seams chosen jointly with a\n"
   "low-distortion UV map (Ambrosio-Tortorelli method) and writes each result\n"
   "with texture coordinates: an OBJ keeps the input's other lines (normals,\n"
-  "groups, materials), a PLY gets a per-face texcoord list. Without INPUT, runs\n"
+  "groups, materials), a PLY gets a per-face texcoord list, a glTF gets\n"
+  "TEXCOORD_0 on every triangle primitive (everything else kept). Without INPUT, runs\n"
   "on a built-in mesh. Polygons are triangulated and non-manifold input is\n"
   "repaired, with a warning on stderr. With several inputs (or a directory),\n"
   "a failed mesh does not stop the others; the exit status is the number of\n"
@@ -107,7 +108,7 @@ std::vector<std::string> expand_directories(const std::vector<std::string>& inpu
       if(entry.is_regular_file(ec) && is_mesh_extension(extension)) found.push_back(entry.path().string());
     }
     if(ec) throw Failure("cannot list the directory '" + input + "': " + ec.message(), "ERROR_CANNOT_READ");
-    if(found.empty()) throw Failure("no mesh file (.obj .off .ply .stl) in the directory '" + input + "'");
+    if(found.empty()) throw Failure("no mesh file (.obj .off .ply .stl .gltf .glb) in the directory '" + input + "'");
     std::sort(found.begin(), found.end());
     files.insert(files.end(), found.begin(), found.end());
   }
@@ -118,7 +119,8 @@ std::vector<std::string> expand_directories(const std::vector<std::string>& inpu
 
 bool is_mesh_extension(const std::string& extension)
 {
-  return extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl";
+  return extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl" ||
+         extension == ".gltf" || extension == ".glb";
 }
 
 bool parse_arguments(int argc, char** argv, Options& options)
@@ -130,7 +132,8 @@ bool parse_arguments(int argc, char** argv, Options& options)
   const auto positive = [](double x) { return x > 0.; };
 
   app.add_option("INPUT", options.inputs,
-                 "mesh files, or directories (their .obj .off .ply .stl files,\n"
+                 "mesh files, or directories (their .obj .off .ply .stl .gltf\n"
+                 ".glb files, "
                  "sorted by name); default: CGAL's meshes/mushroom.off through\n"
                  "CGAL_DATA_DIR or the build's data/, else a built-in mesh")
     ->type_name("FILE|DIR");
@@ -144,9 +147,14 @@ bool parse_arguments(int argc, char** argv, Options& options)
                                                       "created if missing)")
     ->type_name("DIR")->group(output);
   app.add_option("--format", options.output_format,
-                 "format of the outputs: obj or ply (default: that of -o, else\n"
-                 "of the input; obj for .off and .stl inputs)")
-    ->type_name("FMT")->check(CLI::IsMember({"obj", "ply"}))->group(output);
+                 "format of the outputs: obj, ply, gltf or glb (default: that of\n"
+                 "-o, else of the input; obj for .off and .stl inputs; a glTF\n"
+                 "input gives gltf or glb)")
+    ->type_name("FMT")->check(CLI::IsMember({"obj", "ply", "gltf", "glb"}))->group(output);
+  app.add_option("--uv-set", options.uv_set,
+                 "glTF: write the UVs to TEXCOORD_<N>, e.g. 1 for a lightmap set\n"
+                 "beside the material's (default 0); the sets below N must exist")
+    ->type_name("N")->check(CLI::Range(0, 7))->group(output);
   app.add_option("--stats", options.stats, "write statistics as JSON, one input only")->type_name("FILE")->group(output);
   app.add_option("--jsonl", options.jsonl, "write statistics as JSON Lines: one line per input\n"
                                            "('-': standard output)")

@@ -27,6 +27,7 @@ struct Options
   std::string output_dir;     // empty: the current directory
   std::string output_format;  // obj, ply, gltf or glb; empty: the input's (obj for off and stl)
   std::string stats;          // one input only
+  int uv_set = 0;              // glTF: the UVs go to TEXCOORD_<uv_set>
   std::string jsonl;          // one line of statistics per input ("-": stdout)
   std::string svg, png, v_field; // pictures, written by tools/preview
   Preview_camera camera;         // of the PNG; y up unless --up
@@ -47,7 +48,7 @@ struct Options
   bool quiet = false;
 };
 
-// ".obj", ".off", ".ply" or ".stl" (lower case): the files taken from a
+// ".obj", ".off", ".ply", ".stl", ".gltf" or ".glb" (lower case): the files taken from a
 // directory given as input.
 bool is_mesh_extension(const std::string& extension);
 
