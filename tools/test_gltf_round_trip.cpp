@@ -1,0 +1,278 @@
+// uv_unwrap on a glTF file with two primitives (tools/gltf_io.h): the output
+// keeps the node transform, the materials, and every vertex's position and
+// normal; it has the same triangles, a TEXCOORD_0 whose accessor counts and
+// bounds match its data, UVs in [0,1] without flipped triangles, and
+// vertices split only where a seam passes. When the Khronos glTF-Validator
+// is at hand (GLTF_VALIDATOR_SCRIPT and GLTF_VALIDATOR_DIR), it must report
+// 0 errors on the .gltf and .glb outputs (paths given at build time:
+// CUT_PARAM_GLTF_VALIDATOR_SCRIPT, CUT_PARAM_GLTF_VALIDATOR_DIR).
+//   UV_UNWRAP=<uv_unwrap executable> test_gltf_round_trip
+#include <tiny_gltf.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+std::string uv_unwrap_program;
+
+// Appends `bytes` to buffer 0 as a view and an accessor; returns the accessor.
+int add_accessor(tinygltf::Model& m, const void* data, std::size_t bytes, int component, int type, std::size_t count,
+                 int target)
+{
+  auto& buffer = m.buffers[0].data;
+  while(buffer.size() % 4) buffer.push_back(0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  view.byteLength = bytes;
+  view.target = target;
+  const auto* p = static_cast<const unsigned char*>(data);
+  buffer.insert(buffer.end(), p, p + bytes);
+  m.bufferViews.push_back(view);
+  tinygltf::Accessor a;
+  a.bufferView = int(m.bufferViews.size()) - 1;
+  a.componentType = component;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return int(m.accessors.size()) - 1;
+}
+
+// A bumpy n x n grid at height z0, normals +z, 16-bit indices.
+tinygltf::Primitive grid(tinygltf::Model& m, int n, float z0, int material)
+{
+  std::vector<float> pos, nrm;
+  std::vector<std::uint16_t> idx;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const float x = float(i) / n, y = float(j) / n;
+      pos.insert(pos.end(), {x, y, z0 + 0.3f * std::sin(3.f * x) * std::cos(2.f * y)});
+      nrm.insert(nrm.end(), {0.f, 0.f, 1.f});
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const auto a = std::uint16_t(j * (n + 1) + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + n + 1),
+                 d = std::uint16_t(c + 1);
+      idx.insert(idx.end(), {a, b, d, a, d, c});
+    }
+  tinygltf::Primitive p;
+  const std::size_t count = pos.size() / 3;
+  p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                          TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
+  auto& a = m.accessors.back();
+  a.minValues = {1e9, 1e9, 1e9};
+  a.maxValues = {-1e9, -1e9, -1e9};
+  for(std::size_t v = 0; v < count; ++v)
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      a.minValues[c] = std::min(a.minValues[c], double(pos[3 * v + c]));
+      a.maxValues[c] = std::max(a.maxValues[c], double(pos[3 * v + c]));
+    }
+  p.attributes["NORMAL"] = add_accessor(m, nrm.data(), nrm.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                        TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                           TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  p.material = material;
+  p.mode = TINYGLTF_MODE_TRIANGLES;
+  return p;
+}
+
+tinygltf::Model two_primitives()
+{
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.buffers.emplace_back();
+  tinygltf::Mesh mesh;
+  mesh.name = "two";
+  mesh.primitives.push_back(grid(m, 10, 0.f, 0));
+  mesh.primitives.push_back(grid(m, 6, 1.f, 1));
+  m.meshes.push_back(mesh);
+  for(const char* name : {"red", "blue"})
+  {
+    tinygltf::Material material;
+    material.name = name;
+    m.materials.push_back(material);
+  }
+  tinygltf::Node node;
+  node.mesh = 0;
+  node.name = "grids";
+  node.translation = {1., 2., 3.};
+  m.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  m.scenes.push_back(scene);
+  m.defaultScene = 0;
+  return m;
+}
+
+// Element i of an accessor as floats (float data only).
+std::vector<float> floats(const tinygltf::Model& m, int accessor, std::size_t i)
+{
+  const tinygltf::Accessor& a = m.accessors[std::size_t(accessor)];
+  const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+  const int n = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+  const std::size_t stride = v.byteStride ? v.byteStride : std::size_t(n) * 4;
+  std::vector<float> out(static_cast<std::size_t>(n));
+  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset + i * stride,
+              out.size() * 4);
+  return out;
+}
+
+std::vector<std::uint32_t> indices(const tinygltf::Model& m, const tinygltf::Primitive& p)
+{
+  const tinygltf::Accessor& a = m.accessors[std::size_t(p.indices)];
+  const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+  const unsigned char* data = m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset;
+  std::vector<std::uint32_t> out(a.count);
+  for(std::size_t i = 0; i < a.count; ++i)
+  {
+    if(a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+    {
+      std::uint16_t x;
+      std::memcpy(&x, data + 2 * i, 2);
+      out[i] = x;
+    }
+    else
+      std::memcpy(&out[i], data + 4 * i, 4);
+  }
+  return out;
+}
+
+tinygltf::Model load(const std::string& file)
+{
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model m;
+  std::string err, warn;
+  const bool ok = fs::path(file).extension() == ".glb" ? loader.LoadBinaryFromFile(&m, &err, &warn, file)
+                                                       : loader.LoadASCIIFromFile(&m, &err, &warn, file);
+  EXPECT_TRUE(ok) << err;
+  return m;
+}
+
+class Gltf_round_trip : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(Gltf_round_trip, keeps_the_scene_and_adds_valid_uvs)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  const fs::path dir = fs::temp_directory_path() / ("cut_param_gltf_" + GetParam());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string input = (dir / "two.gltf").string(), output = (dir / ("two_uv." + GetParam())).string();
+  tinygltf::Model in = two_primitives();
+  tinygltf::TinyGLTF writer;
+  ASSERT_TRUE(writer.WriteGltfSceneToFile(&in, input, false, true, true, false));
+  in = load(input);
+
+  const std::string command = "\"" + uv_unwrap_program + "\" \"" + input + "\" -o \"" + output + "\" -q";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const tinygltf::Model out = load(output);
+
+  // the scene: node, transform, materials, primitives and their materials
+  ASSERT_EQ(out.nodes.size(), 1u);
+  EXPECT_EQ(out.nodes[0].translation, in.nodes[0].translation);
+  EXPECT_EQ(out.nodes[0].name, "grids");
+  ASSERT_EQ(out.materials.size(), 2u);
+  EXPECT_EQ(out.materials[0].name, "red");
+  EXPECT_EQ(out.materials[1].name, "blue");
+  ASSERT_EQ(out.meshes.size(), 1u);
+  ASSERT_EQ(out.meshes[0].primitives.size(), 2u);
+
+  for(std::size_t k = 0; k < 2; ++k)
+  {
+    SCOPED_TRACE("primitive " + std::to_string(k));
+    const tinygltf::Primitive& pi = in.meshes[0].primitives[k];
+    const tinygltf::Primitive& po = out.meshes[0].primitives[k];
+    EXPECT_EQ(po.material, pi.material);
+    ASSERT_TRUE(po.attributes.count("TEXCOORD_0"));
+    const int pos = po.attributes.at("POSITION"), nrm = po.attributes.at("NORMAL"), uv = po.attributes.at("TEXCOORD_0");
+    const std::size_t n = out.accessors[std::size_t(pos)].count;
+    EXPECT_EQ(out.accessors[std::size_t(nrm)].count, n);
+    EXPECT_EQ(out.accessors[std::size_t(uv)].count, n);
+
+    // triangles: the same ones, corner by corner, by position and normal
+    const std::vector<std::uint32_t> ii = indices(in, pi), io = indices(out, po);
+    ASSERT_EQ(io.size(), ii.size());
+    for(std::size_t c = 0; c < io.size(); ++c)
+    {
+      ASSERT_LT(io[c], n);
+      EXPECT_EQ(floats(out, pos, io[c]), floats(in, pi.attributes.at("POSITION"), ii[c]));
+      EXPECT_EQ(floats(out, nrm, io[c]), floats(in, pi.attributes.at("NORMAL"), ii[c]));
+    }
+
+    // accessor bounds match the data (the validator's rule for POSITION)
+    for(int accessor : {pos, uv})
+    {
+      const tinygltf::Accessor& a = out.accessors[std::size_t(accessor)];
+      ASSERT_FALSE(a.minValues.empty());
+      std::vector<double> lo(a.minValues.size(), 1e300), hi(a.minValues.size(), -1e300);
+      for(std::size_t v = 0; v < a.count; ++v)
+      {
+        const std::vector<float> x = floats(out, accessor, v);
+        for(std::size_t c = 0; c < x.size(); ++c)
+        {
+          lo[c] = std::min(lo[c], double(x[c]));
+          hi[c] = std::max(hi[c], double(x[c]));
+        }
+      }
+      EXPECT_EQ(lo, a.minValues);
+      EXPECT_EQ(hi, a.maxValues);
+    }
+
+    // UVs in [0,1], no flipped triangle (v points down in glTF: the area
+    // of a front face is negative there), and a vertex is split only if
+    // its copies have different UVs
+    std::map<std::vector<float>, std::set<std::vector<float>>> uvs_at;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      const std::vector<float> t = floats(out, uv, v);
+      EXPECT_TRUE(t[0] >= 0.f && t[0] <= 1.f && t[1] >= 0.f && t[1] <= 1.f);
+      EXPECT_TRUE(uvs_at[floats(out, pos, v)].insert(t).second) << "vertex " << v << " split without a seam";
+    }
+    EXPECT_EQ(uvs_at.size(), in.accessors[std::size_t(pi.attributes.at("POSITION"))].count);
+    for(std::size_t t = 0; t < io.size(); t += 3)
+    {
+      const auto a = floats(out, uv, io[t]), b = floats(out, uv, io[t + 1]), c = floats(out, uv, io[t + 2]);
+      const double area2 = double(b[0] - a[0]) * (c[1] - a[1]) - double(b[1] - a[1]) * (c[0] - a[0]);
+      EXPECT_LT(area2, 0.) << "triangle " << t / 3 << " is flipped";
+    }
+  }
+
+  // the Khronos validator, where the build has it (scripts/test.sh installs it when npm can)
+  const std::string script = CUT_PARAM_GLTF_VALIDATOR_SCRIPT, validator_dir = CUT_PARAM_GLTF_VALIDATOR_DIR;
+  if(!script.empty() && fs::exists(script) && fs::exists(fs::path(validator_dir) / "node_modules" / "gltf-validator"))
+  {
+    const std::string validate =
+      "GLTF_VALIDATOR_DIR=\"" + validator_dir + "\" node \"" + script + "\" \"" + output + "\"";
+    EXPECT_EQ(std::system(validate.c_str()), 0) << validate;
+  }
+  else
+    std::cout << "glTF-Validator not available: bounds and counts checked here only" << std::endl;
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, Gltf_round_trip, ::testing::Values("gltf", "glb"));
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  ::testing::InitGoogleTest(&argc, argv);
+  if(const char* program = std::getenv("UV_UNWRAP")) uv_unwrap_program = program;
+  return RUN_ALL_TESTS();
+}
