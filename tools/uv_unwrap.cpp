@@ -18,6 +18,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/face_visibility.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include "preview/preview.h"
@@ -151,6 +152,8 @@ struct Run_summary
   bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
   SMP::Cut_and_parameterize_result result;
   double time_seconds = 0.;
+  double seam_visibility = std::nan(""); // with --hide-seams or --report-visibility
+  double visibility_seconds = 0.;
 };
 
 // The statistics of one run (documented in the README); numbers that are
@@ -179,6 +182,8 @@ nlohmann::ordered_json statistics(const Run_summary& s)
   j["uv_scale"] = number(s.result.uv_scale);
   j["uv_in_unit_square"] = s.uv_in_unit_square;
   j["time_seconds"] = number(s.time_seconds);
+  j["seam_visibility"] = number(s.seam_visibility);
+  j["visibility_seconds"] = number(s.visibility_seconds);
   j["newton_iterations"] = s.result.newton_iterations;
   j["factorizations"] = s.result.number_of_factorizations;
   j["timings"] = {{"initialization", number(t.initialization)}, {"u_steps", number(t.u_steps)},
@@ -342,8 +347,23 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
       return true;
     };
 
+  // visibility: to steer the seams (--hide-seams) or to report where they lie
+  auto visibility = mesh.add_property_map<face_descriptor, double>("f:visibility", 1.).first;
+  auto face_lambda = mesh.add_property_map<face_descriptor, double>("f:lambda", 1.).first;
+  const bool visibility_wanted = options.hide_seams > 0. || options.report_visibility;
+  if(visibility_wanted)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const SMP::Error_code status = SMP::face_visibility(mesh, visibility);
+    if(status != SMP::OK)
+      throw Failure(std::string("visibility failed: ") + SMP::error_message(status), SMP::error_name(status));
+    if(options.hide_seams > 0.) SMP::visibility_face_lambda(mesh, visibility, face_lambda, options.hide_seams);
+    summary.visibility_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
   namespace P = SMP::parameters;
   const auto np = P::lambda(options.lambda,
+                  P::face_lambda_map(face_lambda,
                   P::epsilon_start(options.epsilon_start,
                   P::epsilon_end(options.epsilon_end,
                   P::iterations_per_epsilon(options.iterations,
@@ -356,7 +376,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   P::bounding_box_stiffness(options.box_stiffness,
                   P::bounding_box_distortion_budget(options.box_distortion_budget,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
@@ -364,6 +384,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   if(!summary.result.ok())
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
                   SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
+  if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
   summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
   summary.uv_in_unit_square = true;
@@ -395,7 +416,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
   }
   if(primitives.empty()) throw Failure("'" + input + "' has no triangles", "ERROR_EMPTY_MESH");
 
-  double area = 0., seam_length = 0., distortion = 0., initial = 0., coverage = 0.;
+  double area = 0., seam_length = 0., distortion = 0., initial = 0., coverage = 0., seen = 0.;
   SMP::Cut_and_parameterize_result& total = summary.result;
   total = SMP::Cut_and_parameterize_result();
   summary.uv_in_unit_square = true;
@@ -452,6 +473,8 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       initial += a * r.initial_distortion;
       coverage += a * r.uv_coverage;
       seam_length += r.seam_length * std::sqrt(a / M_PI);
+      if(!std::isnan(part.seam_visibility)) seen += part.seam_visibility * r.seam_length * std::sqrt(a / M_PI);
+      summary.visibility_seconds += part.visibility_seconds;
       summary.vertices += num_vertices(mesh);
       summary.faces += num_faces(mesh);
       summary.flipped_faces += part.flipped_faces;
@@ -485,6 +508,8 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
   total.initial_distortion = initial / area;
   total.uv_coverage = coverage / area;
   total.seam_length = seam_length / std::sqrt(area / M_PI);
+  if(options.hide_seams > 0. || options.report_visibility)
+    summary.seam_visibility = seam_length > 0. ? seen / seam_length : 0.;
   for(const std::string& w : doc.warnings)
   {
     std::cerr << "uv_unwrap: warning: " << w << std::endl;
@@ -568,6 +593,9 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
               << "  UV coverage " << 100. * r.uv_coverage << " %, border crossings " << summary.border_crossings
               << ", UVs " << (summary.uv_in_unit_square ? "in" : "not in") << " the unit square\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
+              << (std::isnan(summary.seam_visibility) ? std::string()
+                  : "  seam visibility " + std::to_string(summary.seam_visibility) + " (visibility " +
+                    std::to_string(summary.visibility_seconds) + " s)\n")
               << "  wrote " << output;
     for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field})
       if(!file->empty()) std::cout << ", " << *file;

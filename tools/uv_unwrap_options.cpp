@@ -174,6 +174,18 @@ bool parse_arguments(int argc, char** argv, Options& options)
   app.add_option("--passes", options.passes, "optimize-and-cut passes (default 1)")
     ->type_name("N")->transform(count())->group(method);
 
+  const std::string seams = "Seams";
+  app.add_option("--hide-seams", options.hide_seams,
+                 "move seams to where the surface is least visible (ambient\n"
+                 "occlusion): seams cost exp(S (r - 1/2)) times more, r the\n"
+                 "face's visibility rank in [0,1]; S >= 0 (default 6 when\n"
+                 "given alone: write the input first, or --hide-seams=S)")
+    ->type_name("[S]")->expected(0, 1)->default_str("6")
+    ->transform(number("a number >= 0", [](double x) { return x >= 0.; }))->group(seams);
+  app.add_flag("--report-visibility", options.report_visibility,
+               "compute the visibility and report seam_visibility (the mean\n"
+               "visibility along the seams) without steering the seams")->group(seams);
+
   const std::string atlas = "Texture atlas";
   app.add_flag("--allow-overlaps", options.allow_overlaps,
                "let a chart overlap itself (no scaffold; charts still packed apart)")->group(atlas);

@@ -45,6 +45,9 @@ struct Options
   double box_stiffness = -1.;    // < 0: gentle (5) for the default square, tight (300) with --box
   bool box_given = false;
   double box_distortion_budget = 0.; // set by parse_arguments (infinite once the box is asked for)
+  // seams and visibility (face_visibility.h)
+  double hide_seams = 0.;        // > 0: λ from the visibility, with this strength
+  bool report_visibility = false; // compute seam_visibility without steering the seams
   bool quiet = false;
 };
 

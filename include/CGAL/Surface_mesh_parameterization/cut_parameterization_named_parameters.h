@@ -80,6 +80,11 @@ CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_stiffness_t, bounding_box_stiffness)
 /// `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given).
 CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_distortion_budget_t, bounding_box_distortion_budget)
 
+/// Visibility (face_visibility()): rays cast per face (int >= 1, default 64).
+CGAL_SMP_CUT_NAMED_PARAMETER(number_of_rays_t, number_of_rays)
+/// Visibility (face_visibility()): faces farther than this do not block (double > 0, default: no limit).
+CGAL_SMP_CUT_NAMED_PARAMETER(maximum_distance_t, maximum_distance)
+
 /// Metrics: UV length per 3D length of the map measured (e.g. `uv_scale` of a
 /// packed atlas); the UVs are divided by it (double, default 1).
 CGAL_SMP_CUT_NAMED_PARAMETER(uv_scale_t, uv_scale)
