@@ -151,6 +151,28 @@ void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
       put(uvmap, opposite(surface.face_edge_halfedge(fe), mesh), uv(fe));
 }
 
+/// No `forbidden_seam_edge_map` given: nothing is forbidden.
+template <typename Surface>
+bool read_forbidden_edges(const Surface&, CGAL::internal_np::Param_not_found, Joint_state&) { return true; }
+
+/// Reads the forbidden edges into `state.forbidden` (left empty if none is
+/// flagged; flags on border edges are ignored). False if an edge is both a
+/// given seam and forbidden.
+template <typename Surface, typename ForbiddenEdgeMap>
+bool read_forbidden_edges(const Surface& surface, const ForbiddenEdgeMap& forbidden_map, Joint_state& state)
+{
+  std::vector<char> forbidden(surface.edges.size(), 0);
+  bool any = false;
+  for(std::size_t e = 0; e < surface.edges.size(); ++e)
+    if(get(forbidden_map, surface.edges[e])) { forbidden[e] = 1; any = true; }
+  for(std::size_t fe = 0; fe < surface.twin.size(); ++fe)
+    if(surface.twin[fe] < 0) forbidden[surface.edge_of[fe]] = 0;
+  for(std::size_t e = 0; e < surface.edges.size(); ++e)
+    if(forbidden[e] && state.is_cut[e]) return false;
+  if(any) state.forbidden.swap(forbidden);
+  return true;
+}
+
 /// Seams = cut edges that are not on the mesh's boundary.
 template <typename Surface, typename SeamEdgeMap>
 void write_seams(const Surface& surface, const Joint_state& state, SeamEdgeMap seam_edge_map)
@@ -233,6 +255,11 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   unless marked CGAL):
 ///   - `lambda`: seam cost λ, relative to the mean edge length; default 1
 ///   - `face_lambda_map`: face → double multiplying λ (assisted cutting); default 1
+///   - `forbidden_seam_edge_map`: edge → bool, edges that no seam may use:
+///     the initial cut routes around them, the alternation's cuts and the
+///     multiresolution transfer avoid them. An edge both in `seam_edge_map`
+///     and forbidden gives `ERROR_WRONG_PARAMETER`; flags on border edges are
+///     ignored. Default: none
 ///   - `epsilon_start`, `epsilon_end`: ε range, relative to the mean edge length; default 0.1, 0.01
 ///   - `iterations_per_epsilon`: alternations per ε; default 3
 ///   - `gamma`: default 1e-7
@@ -299,6 +326,8 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   (a pinched vertex: its faces form several fans), `ERROR_DEGENERATE_FACE`
 ///   (only with `reject_degenerate_faces`), `ERROR_WRONG_PARAMETER`,
 ///   `ERROR_NO_TOPOLOGICAL_DISC` (the initial cut failed),
+///   `ERROR_FORBIDDEN_EDGES_BLOCK_CUT` (the forbidden edges leave no cut that
+///   opens the mesh into disks, e.g. on a closed surface with every edge forbidden),
 ///   `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` (a factorization or solve failed),
 ///   `ERROR_NO_1_TO_1_MAPPING` (the final map would have a flipped face or a
 ///   non-finite UV; never returned on any mesh tested), `ERROR_CANCELED`.
@@ -309,7 +338,8 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   no two UV border segments cross (with `global_injectivity`), every UV lies
 ///   in [0,1]² (unless `world_units`) with charts at least `padding` texels
 ///   apart,
-///   every seam edge is an edge of the mesh that is not on its boundary, and
+///   every seam edge is an edge of the mesh that is not on its boundary and
+///   not flagged in `forbidden_seam_edge_map`, and
 ///   cutting along the seams leaves every connected component a topological
 ///   disk (checked by assertions in debug builds)
 ///
@@ -356,6 +386,8 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
 
   state.is_cut.resize(surface.edges.size());
   for(std::size_t e = 0; e < surface.edges.size(); ++e) state.is_cut[e] = get(seam_edge_map, surface.edges[e]);
+  if(!ic::read_forbidden_edges(surface, get_parameter(np, internal_np::forbidden_seam_edge_map), state))
+    return finish(ERROR_WRONG_PARAMETER);
   state.timings.initialization = ic::seconds_since(start); // joint_optimization() adds the rest
 
   const Error_code status = ic::joint_optimization(surface, face_lambda, settings, state);

@@ -23,6 +23,11 @@ constexpr Error_code ERROR_NON_MANIFOLD = Error_code(ERROR_WRONG_PARAMETER + 3);
 constexpr Error_code ERROR_CANCELED = Error_code(ERROR_WRONG_PARAMETER + 4);
 
 /// \ingroup PkgCutParameterizationRef
+/// The forbidden seam edges (`forbidden_seam_edge_map`) leave no cut that
+/// opens the mesh into topological disks: for example every edge of a closed
+/// surface is forbidden, or forbidden edges cross every loop around a handle.
+constexpr Error_code ERROR_FORBIDDEN_EDGES_BLOCK_CUT = Error_code(ERROR_WRONG_PARAMETER + 5);
+/// \ingroup PkgCutParameterizationRef
 /// Message for any code of CGAL's `Error_code` or of this package (CGAL's own
 /// table is off by one from code 4 on; this one is not).
 inline const char* error_message(Error_code code)
@@ -43,6 +48,7 @@ inline const char* error_message(Error_code code)
     case int(ERROR_DEGENERATE_FACE): return "A face is degenerate (zero area)";
     case int(ERROR_NON_MANIFOLD): return "The mesh is not manifold";
     case int(ERROR_CANCELED): return "Canceled by the progress callback";
+    case int(ERROR_FORBIDDEN_EDGES_BLOCK_CUT): return "The forbidden seam edges leave no cut that opens the mesh into disks";
     default: return "Unknown error";
   }
 }
@@ -68,6 +74,7 @@ inline const char* error_name(Error_code code)
     case int(ERROR_DEGENERATE_FACE): return "ERROR_DEGENERATE_FACE";
     case int(ERROR_NON_MANIFOLD): return "ERROR_NON_MANIFOLD";
     case int(ERROR_CANCELED): return "ERROR_CANCELED";
+    case int(ERROR_FORBIDDEN_EDGES_BLOCK_CUT): return "ERROR_FORBIDDEN_EDGES_BLOCK_CUT";
     default: return "ERROR_UNKNOWN";
   }
 }

@@ -7,7 +7,8 @@
 // vertex farthest from that boundary back to it, so the cut opens the chart
 // instead of making a closed slit, and never leaves and re-enters the
 // boundary (which would split a chart). Other patches get their diameter
-// path, found by two sweeps.
+// path, found by two sweeps. Forbidden edges are left out of the patch
+// graphs, so no path uses one.
 #ifndef CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 #define CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 
@@ -46,6 +47,7 @@ struct Patch_graph
 /// the boundary starts from its diameter path (two Dijkstra sweeps).
 inline std::vector<Cut_path> patch_cut_tree(const Patch_graph& patch, double minimum_length, int max_branches)
 {
+  if(patch.vertex.empty()) return {}; // every edge of the patch forbidden
   std::vector<int> sources;
   for(int i = 0; i < int(patch.vertex.size()); ++i)
     if(patch.on_boundary[i]) sources.push_back(i);
@@ -107,8 +109,8 @@ std::vector<std::vector<int>> low_v_patches(const Surface& surface, const std::v
 
 template <typename Surface>
 Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
-                        const std::vector<char>& on_boundary, const std::vector<int>& faces,
-                        std::vector<int>& local_index)
+                        const std::vector<char>& on_boundary, const std::vector<char>& forbidden,
+                        const std::vector<int>& faces, std::vector<int>& local_index)
 {
   Patch_graph patch;
   auto local = [&](int v) {
@@ -128,6 +130,7 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
       if(tw >= 0 && tw > fe && std::binary_search(faces.begin(), faces.end(), tw / 3)) continue;
       const int e = surface.edge_of[fe];
       const bool boundary_edge = tw < 0 || is_cut[e];
+      if(!boundary_edge && !forbidden.empty() && forbidden[e]) continue;
       const int a = local(surface.edge_source(fe)); // sequenced: numbering must not depend on the compiler
       const int b = local(surface.edge_target(fe));
       patch.graph.add_edge(a, b, e, boundary_edge ? 0. : surface.edge_length(fe));
@@ -136,12 +139,13 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
   return patch;
 }
 
-/// Seam paths extracted from v; edges already cut are not repeated. Paths
+/// Seam paths extracted from v, on edges that are not `forbidden` (per
+/// surface edge; empty: none); edges already cut are not repeated. Paths
 /// shorter than `minimum_relative_length` times the longest are dropped.
 template <typename Surface>
 std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vector<char>& is_cut,
-                                        const Eigen::VectorXd& v, double minimum_relative_length,
-                                        int max_branches_per_patch = 32)
+                                        const std::vector<char>& forbidden, const Eigen::VectorXd& v,
+                                        double minimum_relative_length, int max_branches_per_patch = 32)
 {
   const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
   std::vector<int> local_index(surface.number_of_vertices(), -1);
@@ -150,7 +154,7 @@ std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vecto
   for(std::vector<int>& faces : low_v_patches(surface, is_cut, v))
   {
     std::sort(faces.begin(), faces.end());
-    graphs.push_back(patch_graph(surface, is_cut, on_boundary, faces, local_index));
+    graphs.push_back(patch_graph(surface, is_cut, on_boundary, forbidden, faces, local_index));
     const std::vector<Cut_path> first = patch_cut_tree(graphs.back(), 0., 1);
     if(!first.empty()) longest = (std::max)(longest, first.front().length);
   }

@@ -8,6 +8,14 @@
 // - A closed genus-0 component needs no loop: it is opened along a path
 //   between two far-apart vertices (two Dijkstra sweeps), from which the
 //   optimization grows its seams.
+//
+// Forbidden edges (per surface edge; an empty vector: none) are never cut:
+// the paths avoid them, the tree of the tree-cotree decomposition takes one
+// only where a vertex cannot be reached otherwise, and the cotree takes them
+// first. A forbidden edge left out of the cotree closes a dual cycle of
+// forbidden edges that no cut graph can avoid (the cycle is non-separating,
+// since the tree reaches both its sides), so make_disks() then fails rather
+// than cut it.
 #ifndef CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 #define CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 
@@ -59,10 +67,14 @@ inline Chart_topology chart_topology(const Chart_mesh& mesh)
   return t;
 }
 
+/// True if edge `e` is flagged in `flags` (an empty vector flags nothing).
+inline bool is_flagged(const std::vector<char>& flags, int e) { return !flags.empty() && flags[e]; }
+
 /// Edge graph on the surface's vertices, with the edges flagged in `use_edge`
-/// weighted by their 3D length.
+/// weighted by their 3D length, plus `penalty` for those flagged in `penalized`.
 template <typename Surface>
-Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& use_edge)
+Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& use_edge,
+                              const std::vector<char>& penalized = {}, double penalty = 0.)
 {
   Edge_graph graph(surface.number_of_vertices());
   std::vector<char> added(surface.edges.size(), 0);
@@ -71,29 +83,43 @@ Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& u
     const int e = surface.edge_of[fe];
     if(!use_edge[e] || added[e]) continue;
     added[e] = 1;
-    graph.add_edge(surface.edge_source(fe), surface.edge_target(fe), e, surface.edge_length(fe));
+    graph.add_edge(surface.edge_source(fe), surface.edge_target(fe), e,
+                   surface.edge_length(fe) + (is_flagged(penalized, e) ? penalty : 0.));
   }
   return graph;
 }
 
-/// Cuts a path between two far-apart vertices of the faces in `component_faces`.
+/// Cuts a path between two far-apart vertices of the faces in
+/// `component_faces`, on edges that are not forbidden. Returns false if no
+/// such path of two edges or more exists.
 template <typename Surface>
-void cut_diameter_path(const Surface& surface, const std::vector<int>& component_faces,
-                       std::vector<char>& is_cut)
+bool cut_diameter_path(const Surface& surface, const std::vector<int>& component_faces,
+                       const std::vector<char>& forbidden, std::vector<char>& is_cut)
 {
-  std::vector<char> in_component(surface.edges.size(), 0);
+  std::vector<char> usable(surface.edges.size(), 0);
+  int start = -1;
   for(int f : component_faces)
-    for(int k = 0; k < 3; ++k) in_component[surface.edge_of[3*f + k]] = 1;
-  const Edge_graph graph = surface_edge_graph(surface, in_component);
-  const int a = graph.shortest_paths({surface.corner_vertex[component_faces.front()][0]}).farthest();
+    for(int k = 0; k < 3; ++k)
+    {
+      const int e = surface.edge_of[3*f + k];
+      if(is_flagged(forbidden, e)) continue;
+      usable[e] = 1;
+      if(start < 0) start = surface.edge_source(3*f + k);
+    }
+  if(start < 0) return false;
+  const Edge_graph graph = surface_edge_graph(surface, usable);
+  const int a = graph.shortest_paths({start}).farthest();
   const Shortest_paths from_a = graph.shortest_paths({a});
   const int b = from_a.farthest();
-  const std::vector<int> path = from_a.path_edges(b);
-  for(int e : path) is_cut[e] = 1;
+  std::vector<int> path = from_a.path_edges(b);
   // a single cut edge opens a two-sided hole, not a disk with a usable border
   if(path.size() < 2)
-    for(const auto& arc : graph.arcs(b))
-      if(!is_cut[arc.edge]) { is_cut[arc.edge] = 1; break; }
+    for(int end : {b, a})
+      for(const auto& arc : graph.arcs(end))
+        if(path.size() < 2 && (path.empty() || arc.edge != path.front())) path.push_back(arc.edge);
+  if(path.size() < 2) return false;
+  for(int e : path) is_cut[e] = 1;
+  return true;
 }
 
 /// Cut graph of the faces in `component_faces` (see the file comment), by
@@ -102,8 +128,11 @@ void cut_diameter_path(const Surface& surface, const std::vector<int>& component
 /// (or from one root on a closed surface), C = dual spanning tree keeping
 /// the longest loops uncut, and every edge in neither closes a loop
 /// (through a handle, or joining two boundary loops) that is cut along T.
+/// With forbidden edges (see the file comment) T uses them last and C first;
+/// returns false if a loop to cut contains one.
 template <typename Surface>
-void cut_graph(const Surface& surface, const std::vector<int>& component_faces, std::vector<char>& is_cut)
+bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
+               const std::vector<char>& forbidden, std::vector<char>& is_cut)
 {
   const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
   std::vector<char> interior(surface.edges.size(), 0);
@@ -116,7 +145,12 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
       if(on_boundary[surface.edge_source(fe)]) sources.push_back(surface.edge_source(fe));
     }
   if(sources.empty()) sources.push_back(surface.corner_vertex[component_faces.front()][0]);
-  const Shortest_paths tree = surface_edge_graph(surface, interior).shortest_paths(sources);
+  // a forbidden edge costs more than any path of allowed edges
+  double penalty = 0.;
+  if(!forbidden.empty())
+    for(int f : component_faces)
+      for(int k = 0; k < 3; ++k) penalty += surface.edge_length(3*f + k);
+  const Shortest_paths tree = surface_edge_graph(surface, interior, forbidden, penalty).shortest_paths(sources);
   std::vector<char> in_tree(surface.edges.size(), 0);
   for(int e : tree.parent_edge) if(e >= 0) in_tree[e] = 1;
 
@@ -131,7 +165,9 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
     }
   auto loop_length = [&](int fe) {
     return tree.distance[surface.edge_source(fe)] + surface.edge_length(fe) + tree.distance[surface.edge_target(fe)]; };
-  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return loop_length(a) > loop_length(b); });
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) {
+    const bool fa = is_flagged(forbidden, surface.edge_of[a]), fb = is_flagged(forbidden, surface.edge_of[b]);
+    return fa != fb ? fa : loop_length(a) > loop_length(b); });
   std::vector<int> face_parent(surface.number_of_faces());
   std::iota(face_parent.begin(), face_parent.end(), 0);
   auto find = [&](int x) { while(face_parent[x] != x) x = face_parent[x] = face_parent[face_parent[x]]; return x; };
@@ -140,20 +176,28 @@ void cut_graph(const Surface& surface, const std::vector<int>& component_faces, 
     const int a = find(fe / 3), b = find(surface.twin[fe] / 3);
     if(a == b)
     { // closes a loop: cut it
-      is_cut[surface.edge_of[fe]] = 1;
+      std::vector<int> loop{surface.edge_of[fe]};
       for(int end : {surface.edge_source(fe), surface.edge_target(fe)})
-        for(int e : tree.path_edges(end)) is_cut[e] = 1;
+        for(int e : tree.path_edges(end)) loop.push_back(e);
+      for(int e : loop)
+      {
+        if(is_flagged(forbidden, e)) return false;
+        is_cut[e] = 1;
+      }
     }
     else
       face_parent[a] = b;
   }
+  return true;
 }
 
-/// Adds cuts so that every chart of the surface cut along `is_cut` is a
-/// topological disk. Returns false if some chart still is not (which the
-/// construction rules out for manifold input).
+/// Adds cuts, never on a `forbidden` edge, so that every chart of the surface
+/// cut along `is_cut` is a topological disk. Returns false if some chart
+/// still is not (which the construction rules out for manifold input without
+/// forbidden edges) or a forbidden edge would have to be cut; `is_cut` may
+/// then hold part of the cuts.
 template <typename Surface>
-bool make_disks(const Surface& surface, std::vector<char>& is_cut)
+bool make_disks(const Surface& surface, std::vector<char>& is_cut, const std::vector<char>& forbidden = {})
 {
   Chart_mesh chart;
   std::vector<int> corner_uv;
@@ -164,11 +208,14 @@ bool make_disks(const Surface& surface, std::vector<char>& is_cut)
   for(int c = 0; c < topology.number_of_charts; ++c)
   {
     if(topology.is_disk(c)) continue;
-    if(topology.loops[c] == 0 && topology.euler[c] == 2)
-      cut_diameter_path(surface, faces_of_chart[c], is_cut);
-    else
-      cut_graph(surface, faces_of_chart[c], is_cut);
+    const bool done = topology.loops[c] == 0 && topology.euler[c] == 2
+                        ? cut_diameter_path(surface, faces_of_chart[c], forbidden, is_cut)
+                        : cut_graph(surface, faces_of_chart[c], forbidden, is_cut);
+    if(!done) return false;
   }
+  if(!forbidden.empty())
+    for(std::size_t e = 0; e < is_cut.size(); ++e)
+      if(is_cut[e] && forbidden[e]) return false;
   build_chart_mesh(surface, is_cut, chart, corner_uv);
   const Chart_topology result = chart_topology(chart);
   for(int c = 0; c < result.number_of_charts; ++c)

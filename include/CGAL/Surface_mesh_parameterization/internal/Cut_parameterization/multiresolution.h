@@ -40,6 +40,7 @@ struct Coarse_surface
   Indexed_surface<Coarse_mesh> surface;
   std::vector<int> fine_vertex;  // per vertex of `surface`: its index in the input
   std::vector<char> is_cut;      // per edge of `surface`: a seam of the input (kept by the simplification)
+  std::vector<char> forbidden;   // per edge of `surface`: a forbidden edge of the input (kept); empty: none
   std::vector<double> face_lambda;
 };
 
@@ -48,12 +49,13 @@ namespace multiresolution {
 using Vertex = Coarse_mesh::Vertex_index;
 using Edge = Coarse_mesh::Edge_index;
 
-/// Vertices that must not move: on the border or on a seam of the input
-/// (a collapse keeps them, and never merges two of them across the inside).
+/// Vertices that must not move: on the border, on a seam or on a forbidden
+/// edge of the input (a collapse keeps them, and never merges two of them
+/// across the inside). The seams and forbidden edges stay edges of the copy.
 struct Pins
 {
   Coarse_mesh::Property_map<Vertex, char> on_border, on_seam;
-  Coarse_mesh::Property_map<Edge, bool> seam;
+  Coarse_mesh::Property_map<Edge, bool> constrained, seam, forbidden;
 
   bool pinned(Vertex v) const { return on_border[v] || on_seam[v]; }
 
@@ -110,14 +112,15 @@ struct Origin_visitor : CGAL::Surface_mesh_simplification::Edge_collapse_visitor
 } // namespace multiresolution
 
 /// Simplifies `surface` to about `target_faces` faces into `coarse`, keeping
-/// the border vertices, the seams of `is_cut` (as edges of the copy) and
+/// the border vertices, the seams of `is_cut` and the `forbidden` edges
+/// (empty: none) as edges of the copy, and
 /// the orientation of the faces (collapses that turn a normal by more than
 /// CGAL's bound are refused). Each coarse face gets the mean λ of its three
 /// vertices, a vertex having the mean λ of its faces. Returns false if the
 /// copy could not be built (then the caller works at full resolution).
 template <typename Surface>
-bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, const std::vector<double>& face_lambda,
-                      std::size_t target_faces, Coarse_surface& coarse)
+bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& forbidden,
+                      const std::vector<double>& face_lambda, std::size_t target_faces, Coarse_surface& coarse)
 {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using namespace multiresolution;
@@ -134,7 +137,9 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   Pins pins;
   pins.on_border = mesh.add_property_map<Vertex, char>("v:cut_on_border", 0).first;
   pins.on_seam = mesh.add_property_map<Vertex, char>("v:cut_on_seam", 0).first;
+  pins.constrained = mesh.add_property_map<Edge, bool>("e:cut_constrained", false).first;
   pins.seam = mesh.add_property_map<Edge, bool>("e:cut_seam", false).first;
+  pins.forbidden = mesh.add_property_map<Edge, bool>("e:cut_forbidden", false).first;
   Origin_visitor visitor;
   visitor.pins = &pins;
   visitor.origin = mesh.add_property_map<Vertex, int>("v:cut_origin", -1).first;
@@ -142,11 +147,14 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)
   {
     const Vertex a = vertex[surface.edge_source(fe)], b = vertex[surface.edge_target(fe)];
+    const int e = surface.edge_of[fe];
     if(surface.twin[fe] < 0) pins.on_border[a] = pins.on_border[b] = 1;
-    else if(is_cut[surface.edge_of[fe]])
+    else if(is_cut[e] || is_flagged(forbidden, e))
     {
       pins.on_seam[a] = pins.on_seam[b] = 1;
-      pins.seam[mesh.edge(mesh.halfedge(a, b))] = true;
+      const Edge edge = mesh.edge(mesh.halfedge(a, b));
+      pins.constrained[edge] = true;
+      (is_cut[e] ? pins.seam : pins.forbidden)[edge] = true;
     }
   }
   std::vector<double> vertex_lambda(vertex.size(), 0.), faces_at(vertex.size(), 0.);
@@ -162,7 +170,7 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   SMS::edge_collapse(mesh, stop,
                      CGAL::parameters::get_cost(SMS::LindstromTurk_cost<Coarse_mesh>())
                        .get_placement(SMS::Bounded_normal_change_placement<Endpoint_placement>(Endpoint_placement{&pins}))
-                       .edge_is_constrained_map(pins.seam)
+                       .edge_is_constrained_map(pins.constrained)
                        .visitor(visitor));
 
   if(index_surface(mesh, get(CGAL::vertex_point, mesh), coarse.surface) != Indexing_status::OK) return false;
@@ -171,6 +179,11 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   for(std::size_t v = 0; v < cs.number_of_vertices(); ++v) coarse.fine_vertex[v] = visitor.origin[cs.vertices[v]];
   coarse.is_cut.resize(cs.edges.size());
   for(std::size_t e = 0; e < cs.edges.size(); ++e) coarse.is_cut[e] = char(pins.seam[cs.edges[e]]);
+  if(!forbidden.empty())
+  {
+    coarse.forbidden.resize(cs.edges.size());
+    for(std::size_t e = 0; e < cs.edges.size(); ++e) coarse.forbidden[e] = char(pins.forbidden[cs.edges[e]]);
+  }
   coarse.face_lambda.resize(cs.number_of_faces());
   for(std::size_t f = 0; f < cs.number_of_faces(); ++f)
   {
@@ -186,12 +199,15 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
 }
 
 /// Cuts on `surface` (the input) the shortest edge path between the input
-/// vertices of each cut edge of the copy that is not on its border.
+/// vertices of each cut edge of the copy that is not on its border, on edges
+/// that are not `forbidden` (empty: none).
 template <typename Surface>
 void transfer_cuts(const Surface& surface, const Coarse_surface& coarse, const std::vector<char>& coarse_is_cut,
-                   std::vector<char>& is_cut)
+                   const std::vector<char>& forbidden, std::vector<char>& is_cut)
 {
-  const Edge_graph graph = surface_edge_graph(surface, std::vector<char>(surface.edges.size(), 1));
+  std::vector<char> usable(surface.edges.size(), 1);
+  for(std::size_t e = 0; e < usable.size(); ++e) usable[e] = char(!is_flagged(forbidden, int(e)));
+  const Edge_graph graph = surface_edge_graph(surface, usable);
   const Indexed_surface<Coarse_mesh>& cs = coarse.surface;
   Shortest_paths scratch;
   for(int fe = 0; fe < int(cs.twin.size()); ++fe)
