@@ -88,4 +88,14 @@ svg_to_png "$work/lion_head_no_box.svg" "$fig/lion_head_no_box_uv.png"
 unwrap lion-head lion_head_box --box 1:1
 svg_to_png "$work/lion_head_box.svg" "$fig/lion_head_box_uv.png"
 
+# Seams where nobody looks (the paper's Fig. 8): the field v, measured
+# visibility only, then steering the seams with it (--hide-seams 6).
+unwrap lion-head lion_head_visible --report-visibility --v-png "$work/lion_head_visible_v.png"
+shrink_png "$work/lion_head_visible_v.png" "$fig/lion_head_v.png"
+unwrap lion-head lion_head_hidden --hide-seams=6 --v-png "$work/lion_head_hidden_v.png"
+shrink_png "$work/lion_head_hidden_v.png" "$fig/lion_head_v_hidden.png"
+for stem in lion_head_visible lion_head_hidden; do
+  echo "$stem: $(tr -d ' \n' < "$work/$stem.json" | grep -o '"seam_visibility":[^,]*')"
+done
+
 ls -l "$fig"

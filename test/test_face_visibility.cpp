@@ -138,6 +138,14 @@ TYPED_TEST(Face_visibility, lambda_grows_with_visibility_around_one)
       if(vis[f] < vis[g]) EXPECT_LT(lambda[f], lambda[g]);
   for(face_descriptor f : faces(mesh)) log_sum += std::log(lambda[f]);
   EXPECT_NEAR(log_sum / double(num_faces(mesh)), 0., 1e-12); // geometric mean 1 (equal areas)
+  // the contrast is exp(strength) between a face that sees all and one that sees nothing
+  face_descriptor blind = *faces(mesh).begin(), open = blind;
+  for(face_descriptor f : faces(mesh))
+  {
+    if(vis[f] == 0.) blind = f;
+    if(vis[f] == 1.) open = f;
+  }
+  EXPECT_NEAR(lambda[open] / lambda[blind], std::exp(3.), 1e-9);
   ASSERT_EQ(SMP::visibility_face_lambda(mesh, vis_map, lambda_map, 0.), SMP::OK);
   for(face_descriptor f : faces(mesh)) EXPECT_EQ(lambda[f], 1.);
   EXPECT_EQ(SMP::visibility_face_lambda(mesh, vis_map, lambda_map, -1.), SMP::ERROR_WRONG_PARAMETER);

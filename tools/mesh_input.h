@@ -130,6 +130,12 @@ struct Input_report
   /// from. Empty when `repaired` (the repair reorders faces and vertices);
   /// otherwise vertex i of the mesh is point i of the file.
   std::vector<std::size_t> face_origin;
+  /// Per point of the file (by index): the mesh vertex at its position
+  /// (the point itself without repair; after a repair, the first vertex at
+  /// the same coordinates), or -1 if it is in no face of the repaired mesh.
+  /// Lets selections given in the file's numbering (tools/seam_constraints.h)
+  /// find their vertices.
+  std::vector<long> point_vertex;
 };
 
 namespace detail {
@@ -994,6 +1000,7 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
   {
     std::string problem = detail::describe_soup_problem(polygons, points.size());
     if(problem.empty()) problem = "not a polygon mesh";
+    const std::vector<Point_3> file_points_kept = points; // the repair renumbers `points`
     PMP::repair_polygon_soup(points, polygons);
     PMP::orient_polygon_soup(points, polygons);
     if(polygons.empty())
@@ -1004,6 +1011,11 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
                                          ") and could not be repaired");
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
     const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
+    std::map<Point_3, long> vertex_at;
+    for(Mesh::Vertex_index v : vertices(mesh)) vertex_at.emplace(mesh.point(v), long(std::size_t(v)));
+    report.point_vertex.assign(file_points_kept.size(), -1);
+    for(std::size_t i = 0; i < file_points_kept.size(); ++i)
+      if(auto it = vertex_at.find(file_points_kept[i]); it != vertex_at.end()) report.point_vertex[i] = it->second;
     report.repaired = true;
     report.warnings.push_back(
       "not a manifold, consistently oriented mesh (" + problem + "): repaired as a polygon soup (" +
@@ -1016,6 +1028,8 @@ inline void read_input_mesh(const std::string& filename, Mesh& mesh, Input_repor
   else
   {
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    report.point_vertex.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) report.point_vertex[i] = long(i);
     report.face_origin.resize(num_faces(mesh));
     for(std::size_t f = 0; f < report.face_origin.size(); ++f) report.face_origin[f] = f;
   }

@@ -8,6 +8,7 @@
 #include "gltf_io.h"
 #include "mesh_input.h"
 #include "mesh_output.h"
+#include "seam_constraints.h"
 #include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh.h>
@@ -209,7 +210,7 @@ template <typename SeamMap, typename UVMap, typename VMap>
 void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& seams, const UVMap& uvmap,
                     const VMap& v, const Run_summary& summary, const std::string& name)
 {
-  if(options.svg.empty() && options.png.empty() && options.v_field.empty()) return;
+  if(options.svg.empty() && options.png.empty() && options.v_field.empty() && options.v_png.empty()) return;
 
   // The preview library takes plain arrays; a freshly read Surface_mesh has
   // contiguous indices.
@@ -261,6 +262,8 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
   }
   if(!options.v_field.empty() && !write_v_field_ply(options.v_field, preview))
     throw Failure("cannot write '" + options.v_field + "'", "ERROR_CANNOT_WRITE");
+  if(!options.v_png.empty() && !write_v_field_png(options.v_png, preview, 1024, 768, true, options.camera))
+    throw Failure("cannot write '" + options.v_png + "'", "ERROR_CANNOT_WRITE");
 }
 
 // ---------------------------------------------------------------- run
@@ -329,10 +332,50 @@ std::string output_file(const Options& options, const std::string& stem, const s
   return (dir / (stem + "_uv." + format)).string();
 }
 
+// The file a mesh was read from, for the constraints given in its numbering.
+struct Mesh_source
+{
+  std::string filename;
+  const mesh_input::Input_report* report = nullptr;
+};
+
+// --seams, --forbid and --lambda-from-ply-property (tools/seam_constraints.h).
+template <typename SeamMap, typename ForbiddenMap, typename LambdaMap>
+void read_constraints(const Options& options, const Mesh& mesh, const Mesh_source* source, SeamMap seams,
+                      ForbiddenMap forbidden, LambdaMap face_lambda)
+{
+  if(options.seams_file.empty() && options.forbid_file.empty() && options.lambda_property.empty()) return;
+  if(source == nullptr || source->report == nullptr)
+    throw Failure("--seams, --forbid and --lambda-from-ply-property need a mesh file (OBJ, OFF, PLY or STL)");
+  try
+  {
+    const mesh_input::Input_report& report = *source->report;
+    if(!options.seams_file.empty())
+      seam_constraints::flag_edges(mesh, report, seam_constraints::read_selection_edges(options.seams_file),
+                                   options.seams_file, seams);
+    if(!options.forbid_file.empty())
+      seam_constraints::flag_edges(mesh, report, seam_constraints::read_selection_edges(options.forbid_file),
+                                   options.forbid_file, forbidden);
+    if(!options.lambda_property.empty())
+    {
+      const std::vector<double> factor =
+        seam_constraints::face_lambda_from_ply(source->filename, mesh, report, options.lambda_property);
+      for(face_descriptor f : faces(mesh)) face_lambda[f] *= factor[std::size_t(f)];
+    }
+  }
+  catch(const seam_constraints::Constraint_error& e)
+  {
+    throw Failure(e.what(), "ERROR_WRONG_PARAMETER");
+  }
+}
+
 // cut_and_parameterize() with the options; fills the summary's result and
 // the counts measured on the output. Throws Failure if the library fails.
+// `source`: the file the mesh comes from (null for glTF primitives and the
+// built-in mesh), for the constraints given in its numbering.
 template <typename SeamMap, typename UVMap, typename VMap>
-void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field, Run_summary& summary)
+void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field, Run_summary& summary,
+                 const Mesh_source* source = nullptr)
 {
   // Progress goes to stderr so that stdout keeps the summary only.
   std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
@@ -360,10 +403,13 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
     if(options.hide_seams > 0.) SMP::visibility_face_lambda(mesh, visibility, face_lambda, options.hide_seams);
     summary.visibility_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+  auto forbidden = mesh.add_property_map<edge_descriptor, bool>("e:forbidden", false).first;
+  read_constraints(options, mesh, source, seams, forbidden, face_lambda);
 
   namespace P = SMP::parameters;
   const auto np = P::lambda(options.lambda,
                   P::face_lambda_map(face_lambda,
+                  P::forbidden_seam_edge_map(forbidden,
                   P::epsilon_start(options.epsilon_start,
                   P::epsilon_end(options.epsilon_end,
                   P::iterations_per_epsilon(options.iterations,
@@ -376,7 +422,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   P::bounding_box_stiffness(options.box_stiffness,
                   P::bounding_box_distortion_budget(options.box_distortion_budget,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
@@ -535,6 +581,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   if(is_gltf(input))
   {
     summary.input = input;
+    if(!options.save_seams_file.empty()) throw Failure("--save-seams needs a mesh file (OBJ, OFF, PLY or STL)");
     const std::string stem = fs::path(input).stem().string();
     const std::string format = output_format(options, input);
     if(format != "gltf" && format != "glb")
@@ -562,6 +609,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
     make_spherical_cap(mesh);
     summary.input = "built-in spherical cap";
     stem = "spherical_cap";
+    for(std::size_t v = 0; v < num_vertices(mesh); ++v) report.point_vertex.push_back(long(v));
   }
   const std::string format = output_format(options, input);
   const std::string output = output_file(options, stem, format);
@@ -574,7 +622,8 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
-  unwrap_mesh(options, mesh, seams, uvmap, v_field, summary);
+  const Mesh_source source{summary.input, &report};
+  unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, &source);
 
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the
@@ -582,6 +631,10 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   write_output(output, format, summary.input, report, mesh, uvmap, summary.warnings);
   summary.output = output;
   write_pictures(options, mesh, seams, uvmap, v_field, summary, stem);
+  if(!options.save_seams_file.empty() &&
+     !seam_constraints::write_selection_edges(options.save_seams_file,
+                                              seam_constraints::flagged_edges(mesh, report, seams)))
+    throw Failure("cannot write '" + options.save_seams_file + "'", "ERROR_CANNOT_WRITE");
 
   if(!options.quiet)
   {
@@ -597,7 +650,8 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
                   : "  seam visibility " + std::to_string(summary.seam_visibility) + " (visibility " +
                     std::to_string(summary.visibility_seconds) + " s)\n")
               << "  wrote " << output;
-    for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field})
+    for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field, &options.v_png,
+                                   &options.save_seams_file})
       if(!file->empty()) std::cout << ", " << *file;
     std::cout << std::endl;
   }

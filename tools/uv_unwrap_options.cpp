@@ -177,14 +177,33 @@ bool parse_arguments(int argc, char** argv, Options& options)
   const std::string seams = "Seams";
   app.add_option("--hide-seams", options.hide_seams,
                  "move seams to where the surface is least visible (ambient\n"
-                 "occlusion): seams cost exp(S (r - 1/2)) times more, r the\n"
-                 "face's visibility rank in [0,1]; S >= 0 (default 6 when\n"
+                 "occlusion): seams cost exp(S (v - mean v)) times more, v\n"
+                 "the face's visibility in [0,1]; S >= 0 (default 6 when\n"
                  "given alone: write the input first, or --hide-seams=S)")
     ->type_name("[S]")->expected(0, 1)->default_str("6")
     ->transform(number("a number >= 0", [](double x) { return x >= 0.; }))->group(seams);
   app.add_flag("--report-visibility", options.report_visibility,
                "compute the visibility and report seam_visibility (the mean\n"
                "visibility along the seams) without steering the seams")->group(seams);
+  app.add_option("--seams", options.seams_file,
+                 "cut these edges (CGAL selection file: its third line lists\n"
+                 "edges as pairs of 0-based vertex indices of the input)")
+    ->type_name("FILE")->check(CLI::ExistingFile)->group(seams);
+  app.add_option("--forbid", options.forbid_file,
+                 "never cut these edges (selection file, as --seams); a mesh\n"
+                 "that cannot be opened without them fails with\n"
+                 "ERROR_FORBIDDEN_EDGES_BLOCK_CUT")
+    ->type_name("FILE")->check(CLI::ExistingFile)->group(seams);
+  app.add_option("--save-seams", options.save_seams_file,
+                 "write the seams found as a selection file (for --seams or\n"
+                 "--forbid, or CGAL's Seam_mesh::add_seams())")
+    ->type_name("FILE")->group(seams);
+  app.add_option("--lambda-from-ply-property", options.lambda_property,
+                 "per-face seam cost factors from a PLY input: a face or\n"
+                 "vertex property NAME (values > 0), or 'color': gray g in\n"
+                 "[0,1] of the face or vertex colors gives 10^(2g-1), black\n"
+                 "draws seams, white keeps them away")
+    ->type_name("NAME")->group(seams);
 
   const std::string atlas = "Texture atlas";
   app.add_flag("--allow-overlaps", options.allow_overlaps,
@@ -239,6 +258,9 @@ bool parse_arguments(int argc, char** argv, Options& options)
     ->group(pictures);
   app.add_option("--v-field", options.v_field, "write the discontinuity field v as a colored PLY")
     ->type_name("FILE.ply")->group(pictures);
+  app.add_option("--v-png", options.v_png, "render the mesh colored by the field v (red: v = 0, where\n"
+                                           "cuts go; blue: v = 1) with the seams in black, as PNG")
+    ->type_name("FILE.png")->group(pictures);
 
   try
   {
@@ -275,8 +297,10 @@ bool parse_arguments(int argc, char** argv, Options& options)
     throw Failure("give -o/--output or --output-dir, not both");
   if(several && !options.stats.empty())
     throw Failure("--stats takes one input; give --jsonl for several");
-  if(several && !(options.svg.empty() && options.png.empty() && options.v_field.empty()))
-    throw Failure("--svg, --png and --v-field take one input");
+  if(several && !(options.svg.empty() && options.png.empty() && options.v_field.empty() && options.v_png.empty()))
+    throw Failure("--svg, --png, --v-field and --v-png take one input");
+  if(several && !(options.seams_file.empty() && options.forbid_file.empty() && options.save_seams_file.empty()))
+    throw Failure("--seams, --forbid and --save-seams take one input (vertex indices are a mesh's own)");
   if(options.epsilon_end > options.epsilon_start)
     throw Failure("--epsilon-end must not exceed --epsilon-start");
   return true;

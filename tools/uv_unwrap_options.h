@@ -29,7 +29,7 @@ struct Options
   std::string stats;          // one input only
   int uv_set = 0;              // glTF: the UVs go to TEXCOORD_<uv_set>
   std::string jsonl;          // one line of statistics per input ("-": stdout)
-  std::string svg, png, v_field; // pictures, written by tools/preview
+  std::string svg, png, v_field, v_png; // pictures, written by tools/preview
   Preview_camera camera;         // of the PNG; y up unless --up
   double lambda = 1.;
   double epsilon_start = 0.1;
@@ -48,6 +48,11 @@ struct Options
   // seams and visibility (face_visibility.h)
   double hide_seams = 0.;        // > 0: λ from the visibility, with this strength
   bool report_visibility = false; // compute seam_visibility without steering the seams
+  // constraints (tools/seam_constraints.h)
+  std::string seams_file;        // selection file: edges to cut
+  std::string forbid_file;       // selection file: edges never cut
+  std::string save_seams_file;   // selection file: the seams found
+  std::string lambda_property;   // PLY face or vertex property (or "color") giving λ factors
   bool quiet = false;
 };
 

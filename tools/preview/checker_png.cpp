@@ -125,6 +125,8 @@ struct Scene
   double cell;       // checker square size in UV units
   double seam_bias;  // world-space depth tolerance for seam visibility
   double seam_radius; // supersampled pixels
+  bool field;         // faces colored by face_v (v_field_color) instead of the checker
+  Rgb seam_color;
 };
 
 void draw_faces(const Scene& s, const Camera& cam, int x0, int x1, Frame& fr)
@@ -182,7 +184,16 @@ void draw_faces(const Scene& s, const Camera& cam, int x0, int x1, Frame& fr)
         const double shade = side * (0.22 + 0.78 * lambert);
         const long long i = (long long)std::floor((u - s.uv0[0]) / s.cell);
         const long long j = (long long)std::floor((v - s.uv0[1]) / s.cell);
-        const float* base = ((i + j) & 1) ? checker_dark : checker_light;
+        float base[3];
+        if(s.field)
+        {
+          const Rgb c = v_field_color(m.face_v[f]);
+          for(int k = 0; k < 3; ++k)
+            base[k] = float(c[std::size_t(k)]);
+        }
+        else
+          for(int k = 0; k < 3; ++k)
+            base[k] = ((i + j) & 1) ? checker_dark[k] : checker_light[k];
         for(int k = 0; k < 3; ++k)
           fr.rgb[3 * id + std::size_t(k)] = float(base[k] * shade);
       }
@@ -222,7 +233,7 @@ void draw_seams(const Scene& s, const Camera& cam, int x0, int x1, Frame& fr)
           if(z > double(fr.depth[id]) + s.seam_bias)
             continue;
           for(int k = 0; k < 3; ++k)
-            fr.rgb[3 * id + std::size_t(k)] = seam_rgb[std::size_t(k)];
+            fr.rgb[3 * id + std::size_t(k)] = s.seam_color[std::size_t(k)];
         }
     }
   }
@@ -257,11 +268,20 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
   return write_checker_png(path, mesh, width, height, two_views, Preview_camera());
 }
 
-bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
-                       const Preview_camera& camera)
+namespace {
+
+// The render of write_checker_png() (field: false) and write_v_field_png() (true).
+bool render_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
+                const Preview_camera& camera, bool field)
 {
   if(!valid_mesh(mesh, true))
     return false;
+  if(field && mesh.face_v.size() != mesh.faces.size())
+    return false;
+  if(field)
+    for(double v : mesh.face_v)
+      if(!std::isfinite(v))
+        return false;
   for(double x : {camera.up[0], camera.up[1], camera.up[2], camera.front[0], camera.front[1], camera.front[2],
                   camera.azimuth, camera.elevation})
     if(!std::isfinite(x))
@@ -314,7 +334,9 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
               {ub.lo[0], ub.lo[1]},
               uv_extent / 24, // ~24 squares across the layout
               0.012 * radius,
-              ss * std::max(1.0, 0.0036 * std::min(width / views, height))};
+              ss * std::max(1.0, 0.0036 * std::min(width / views, height)),
+              field,
+              field ? Rgb{20, 20, 20} : seam_rgb};
   for(int v = 0; v < views; ++v)
   {
     const int x0 = v * fr.w / views, x1 = (v + 1) * fr.w / views;
@@ -346,4 +368,18 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int wi
       }
     }
   return stbi_write_png(path.c_str(), width, height, 3, img.data(), width * 3) != 0;
+}
+
+} // namespace
+
+bool write_checker_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
+                       const Preview_camera& camera)
+{
+  return render_png(path, mesh, width, height, two_views, camera, false);
+}
+
+bool write_v_field_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
+                       const Preview_camera& camera)
+{
+  return render_png(path, mesh, width, height, two_views, camera, true);
 }

@@ -78,6 +78,12 @@ bool write_checker_png(const std::string& path, const Preview_mesh& mesh,
 bool write_checker_png(const std::string& path, const Preview_mesh& mesh,
                        int width, int height, bool two_views, const Preview_camera& camera);
 
+// The render of write_checker_png() with each face colored by face_v
+// instead of the checker (the colors of write_v_field_ply(): red where v = 0,
+// a cut wants to go there; pale at 0.5; blue at 1) and the seams in black.
+// Requires face_v.size() == faces.size(), every value finite.
+bool write_v_field_png(const std::string& path, const Preview_mesh& mesh, int width, int height, bool two_views,
+                       const Preview_camera& camera);
 // ASCII PLY of the mesh with per-face colors from face_v (red: v=0, a cut
 // wants to go there; pale at the 0.5 threshold; blue: v=1) and a per-face
 // float property "v". Requires face_v.size() == faces.size().

@@ -218,6 +218,36 @@ static void check_png(const fs::path& file, int w, int h, bool expect_seams)
               100 * double(light) / n);
 }
 
+// A render of v: red where v is low, blue where it is high (both present in
+// the mesh given), seams in black.
+static void check_v_png(const fs::path& file, int w, int h)
+{
+  int iw = 0, ih = 0, comp = 0;
+  unsigned char* px = stbi_load(file.string().c_str(), &iw, &ih, &comp, 3);
+  CHECK(px != nullptr);
+  if(!px)
+    return;
+  CHECK(iw == w && ih == h);
+  std::size_t red = 0, blue = 0, black = 0;
+  for(long i = 0; i < long(iw) * ih; ++i)
+  {
+    const unsigned char* p = px + 3 * i;
+    if(int(p[0]) > int(p[2]) + 60)
+      ++red;
+    if(int(p[2]) > int(p[0]) + 60)
+      ++blue;
+    if(p[0] < 40 && p[1] < 40 && p[2] < 40)
+      ++black;
+  }
+  stbi_image_free(px);
+  const double n = double(iw) * ih;
+  CHECK(double(red) > 0.01 * n);
+  CHECK(double(blue) > 0.01 * n);
+  CHECK(double(black) > 0.0005 * n);
+  std::printf("  %s: red %.1f%%, blue %.1f%%, black (seams) %zu px\n", file.filename().string().c_str(),
+              100 * double(red) / n, 100 * double(blue) / n, black);
+}
+
 static void check_ply(const fs::path& file, const Preview_mesh& m)
 {
   CHECK(fs::exists(file));
@@ -579,6 +609,11 @@ int main(int argc, char** argv)
     check_png(dir / "disk_checker.png", 1024, 768, true);
     check_png(dir / "disk_checker_single.png", 400, 300, true);
     check_ply(dir / "disk_v.ply", m);
+    CHECK(write_v_field_png((dir / "disk_v.png").string(), m, 640, 480, true, Preview_camera()));
+    check_v_png(dir / "disk_v.png", 640, 480);
+    Preview_mesh short_v = m;
+    short_v.face_v.pop_back();
+    CHECK(!write_v_field_png((dir / "bad.png").string(), short_v, 640, 480, true, Preview_camera()));
 
     // Camera choice: a top view of the disk (z up, looking down) differs from
     // the default y-up view.

@@ -155,7 +155,7 @@ void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 template <typename Surface>
 bool read_forbidden_edges(const Surface&, CGAL::internal_np::Param_not_found, Joint_state&) { return true; }
 
-/// Reads the forbidden edges into `state.forbidden` (left empty if none is
+/// Reads the forbidden edges into `state.rules.forbidden` (left empty if none is
 /// flagged; flags on border edges are ignored). False if an edge is both a
 /// given seam and forbidden.
 template <typename Surface, typename ForbiddenEdgeMap>
@@ -169,7 +169,7 @@ bool read_forbidden_edges(const Surface& surface, const ForbiddenEdgeMap& forbid
     if(surface.twin[fe] < 0) forbidden[surface.edge_of[fe]] = 0;
   for(std::size_t e = 0; e < surface.edges.size(); ++e)
     if(forbidden[e] && state.is_cut[e]) return false;
-  if(any) state.forbidden.swap(forbidden);
+  if(any) state.rules.forbidden.swap(forbidden);
   return true;
 }
 

@@ -12,6 +12,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 #define CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 
@@ -109,7 +110,7 @@ std::vector<std::vector<int>> low_v_patches(const Surface& surface, const std::v
 
 template <typename Surface>
 Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
-                        const std::vector<char>& on_boundary, const std::vector<char>& forbidden,
+                        const std::vector<char>& on_boundary, const Cut_rules& rules,
                         const std::vector<int>& faces, std::vector<int>& local_index)
 {
   Patch_graph patch;
@@ -130,7 +131,7 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
       if(tw >= 0 && tw > fe && std::binary_search(faces.begin(), faces.end(), tw / 3)) continue;
       const int e = surface.edge_of[fe];
       const bool boundary_edge = tw < 0 || is_cut[e];
-      if(!boundary_edge && !forbidden.empty() && forbidden[e]) continue;
+      if(!boundary_edge && rules.is_forbidden(e)) continue;
       const int a = local(surface.edge_source(fe)); // sequenced: numbering must not depend on the compiler
       const int b = local(surface.edge_target(fe));
       patch.graph.add_edge(a, b, e, boundary_edge ? 0. : surface.edge_length(fe));
@@ -139,12 +140,12 @@ Patch_graph patch_graph(const Surface& surface, const std::vector<char>& is_cut,
   return patch;
 }
 
-/// Seam paths extracted from v, on edges that are not `forbidden` (per
-/// surface edge; empty: none); edges already cut are not repeated. Paths
-/// shorter than `minimum_relative_length` times the longest are dropped.
+/// Seam paths extracted from v, never on the forbidden edges of `rules`
+/// (v already carries the λ factors); edges already cut are not repeated.
+/// Paths shorter than `minimum_relative_length` times the longest are dropped.
 template <typename Surface>
 std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vector<char>& is_cut,
-                                        const std::vector<char>& forbidden, const Eigen::VectorXd& v,
+                                        const Cut_rules& rules, const Eigen::VectorXd& v,
                                         double minimum_relative_length, int max_branches_per_patch = 32)
 {
   const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
@@ -154,7 +155,7 @@ std::vector<Cut_path> extract_cut_paths(const Surface& surface, const std::vecto
   for(std::vector<int>& faces : low_v_patches(surface, is_cut, v))
   {
     std::sort(faces.begin(), faces.end());
-    graphs.push_back(patch_graph(surface, is_cut, on_boundary, forbidden, faces, local_index));
+    graphs.push_back(patch_graph(surface, is_cut, on_boundary, rules, faces, local_index));
     const std::vector<Cut_path> first = patch_cut_tree(graphs.back(), 0., 1);
     if(!first.empty()) longest = (std::max)(longest, first.front().length);
   }

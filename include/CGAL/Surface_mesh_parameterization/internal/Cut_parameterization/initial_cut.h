@@ -67,14 +67,11 @@ inline Chart_topology chart_topology(const Chart_mesh& mesh)
   return t;
 }
 
-/// True if edge `e` is flagged in `flags` (an empty vector flags nothing).
-inline bool is_flagged(const std::vector<char>& flags, int e) { return !flags.empty() && flags[e]; }
-
 /// Edge graph on the surface's vertices, with the edges flagged in `use_edge`
-/// weighted by their 3D length, plus `penalty` for those flagged in `penalized`.
+/// weighted by their cost (`rules`), plus `penalty` for the forbidden ones.
 template <typename Surface>
 Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& use_edge,
-                              const std::vector<char>& penalized = {}, double penalty = 0.)
+                              const Cut_rules& rules = Cut_rules(), double penalty = 0.)
 {
   Edge_graph graph(surface.number_of_vertices());
   std::vector<char> added(surface.edges.size(), 0);
@@ -84,7 +81,7 @@ Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& u
     if(!use_edge[e] || added[e]) continue;
     added[e] = 1;
     graph.add_edge(surface.edge_source(fe), surface.edge_target(fe), e,
-                   surface.edge_length(fe) + (is_flagged(penalized, e) ? penalty : 0.));
+                   rules.cost(surface, fe) + (rules.is_forbidden(e) ? penalty : 0.));
   }
   return graph;
 }
@@ -94,7 +91,7 @@ Edge_graph surface_edge_graph(const Surface& surface, const std::vector<char>& u
 /// such path of two edges or more exists.
 template <typename Surface>
 bool cut_diameter_path(const Surface& surface, const std::vector<int>& component_faces,
-                       const std::vector<char>& forbidden, std::vector<char>& is_cut)
+                       const Cut_rules& rules, std::vector<char>& is_cut)
 {
   std::vector<char> usable(surface.edges.size(), 0);
   int start = -1;
@@ -102,12 +99,12 @@ bool cut_diameter_path(const Surface& surface, const std::vector<int>& component
     for(int k = 0; k < 3; ++k)
     {
       const int e = surface.edge_of[3*f + k];
-      if(is_flagged(forbidden, e)) continue;
+      if(rules.is_forbidden(e)) continue;
       usable[e] = 1;
       if(start < 0) start = surface.edge_source(3*f + k);
     }
   if(start < 0) return false;
-  const Edge_graph graph = surface_edge_graph(surface, usable);
+  const Edge_graph graph = surface_edge_graph(surface, usable, rules);
   const int a = graph.shortest_paths({start}).farthest();
   const Shortest_paths from_a = graph.shortest_paths({a});
   const int b = from_a.farthest();
@@ -132,7 +129,7 @@ bool cut_diameter_path(const Surface& surface, const std::vector<int>& component
 /// returns false if a loop to cut contains one.
 template <typename Surface>
 bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
-               const std::vector<char>& forbidden, std::vector<char>& is_cut)
+               const Cut_rules& rules, std::vector<char>& is_cut)
 {
   const std::vector<char> on_boundary = cut_boundary_vertices(surface, is_cut);
   std::vector<char> interior(surface.edges.size(), 0);
@@ -147,10 +144,10 @@ bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
   if(sources.empty()) sources.push_back(surface.corner_vertex[component_faces.front()][0]);
   // a forbidden edge costs more than any path of allowed edges
   double penalty = 0.;
-  if(!forbidden.empty())
+  if(!rules.forbidden.empty())
     for(int f : component_faces)
-      for(int k = 0; k < 3; ++k) penalty += surface.edge_length(3*f + k);
-  const Shortest_paths tree = surface_edge_graph(surface, interior, forbidden, penalty).shortest_paths(sources);
+      for(int k = 0; k < 3; ++k) penalty += rules.cost(surface, 3*f + k);
+  const Shortest_paths tree = surface_edge_graph(surface, interior, rules, penalty).shortest_paths(sources);
   std::vector<char> in_tree(surface.edges.size(), 0);
   for(int e : tree.parent_edge) if(e >= 0) in_tree[e] = 1;
 
@@ -164,9 +161,9 @@ bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
         candidates.push_back(fe);
     }
   auto loop_length = [&](int fe) {
-    return tree.distance[surface.edge_source(fe)] + surface.edge_length(fe) + tree.distance[surface.edge_target(fe)]; };
+    return tree.distance[surface.edge_source(fe)] + rules.cost(surface, fe) + tree.distance[surface.edge_target(fe)]; };
   std::sort(candidates.begin(), candidates.end(), [&](int a, int b) {
-    const bool fa = is_flagged(forbidden, surface.edge_of[a]), fb = is_flagged(forbidden, surface.edge_of[b]);
+    const bool fa = rules.is_forbidden(surface.edge_of[a]), fb = rules.is_forbidden(surface.edge_of[b]);
     return fa != fb ? fa : loop_length(a) > loop_length(b); });
   std::vector<int> face_parent(surface.number_of_faces());
   std::iota(face_parent.begin(), face_parent.end(), 0);
@@ -181,7 +178,7 @@ bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
         for(int e : tree.path_edges(end)) loop.push_back(e);
       for(int e : loop)
       {
-        if(is_flagged(forbidden, e)) return false;
+        if(rules.is_forbidden(e)) return false;
         is_cut[e] = 1;
       }
     }
@@ -191,13 +188,13 @@ bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
   return true;
 }
 
-/// Adds cuts, never on a `forbidden` edge, so that every chart of the surface
-/// cut along `is_cut` is a topological disk. Returns false if some chart
-/// still is not (which the construction rules out for manifold input without
-/// forbidden edges) or a forbidden edge would have to be cut; `is_cut` may
-/// then hold part of the cuts.
+/// Adds cuts, as cheap as `rules` make them and never on a forbidden edge,
+/// so that every chart of the surface cut along `is_cut` is a topological
+/// disk. Returns false if some chart still is not (which the construction
+/// rules out for manifold input without forbidden edges) or a forbidden edge
+/// would have to be cut; `is_cut` may then hold part of the cuts.
 template <typename Surface>
-bool make_disks(const Surface& surface, std::vector<char>& is_cut, const std::vector<char>& forbidden = {})
+bool make_disks(const Surface& surface, std::vector<char>& is_cut, const Cut_rules& rules = Cut_rules())
 {
   Chart_mesh chart;
   std::vector<int> corner_uv;
@@ -209,13 +206,12 @@ bool make_disks(const Surface& surface, std::vector<char>& is_cut, const std::ve
   {
     if(topology.is_disk(c)) continue;
     const bool done = topology.loops[c] == 0 && topology.euler[c] == 2
-                        ? cut_diameter_path(surface, faces_of_chart[c], forbidden, is_cut)
-                        : cut_graph(surface, faces_of_chart[c], forbidden, is_cut);
+                        ? cut_diameter_path(surface, faces_of_chart[c], rules, is_cut)
+                        : cut_graph(surface, faces_of_chart[c], rules, is_cut);
     if(!done) return false;
   }
-  if(!forbidden.empty())
-    for(std::size_t e = 0; e < is_cut.size(); ++e)
-      if(is_cut[e] && forbidden[e]) return false;
+  for(std::size_t e = 0; e < rules.forbidden.size(); ++e)
+    if(is_cut[e] && rules.forbidden[e]) return false;
   build_chart_mesh(surface, is_cut, chart, corner_uv);
   const Chart_topology result = chart_topology(chart);
   for(int c = 0; c < result.number_of_charts; ++c)

@@ -103,7 +103,7 @@ struct Joint_timings
 struct Joint_state
 {
   std::vector<char> is_cut;      // per surface edge
-  std::vector<char> forbidden;   // per surface edge: never cut; empty: none
+  Cut_rules rules;               // forbidden edges and the cost of cutting each edge
   Chart_mesh chart;
   std::vector<int> corner_uv;    // per surface corner
   UV_vector x;
@@ -132,14 +132,14 @@ void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Join
   const std::vector<char> before = state.is_cut;
   for(const Cut_path& path : paths)
     for(int e : path.edges) state.is_cut[e] = 1;
-  if(!make_disks(surface, state.is_cut, state.forbidden))
+  if(!make_disks(surface, state.is_cut, state.rules))
   {
     state.is_cut = before;
     for(const Cut_path& path : paths)
     {
       std::vector<char> trial = state.is_cut;
       for(int e : path.edges) trial[e] = 1;
-      if(make_disks(surface, trial, state.forbidden)) state.is_cut.swap(trial);
+      if(make_disks(surface, trial, state.rules)) state.is_cut.swap(trial);
     }
   }
   const std::vector<int> old_corner_uv = state.corner_uv;
@@ -197,7 +197,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
         return ERROR_CANCELED;
     }
   Scoped_timer extraction(state.timings.cut_extraction);
-  paths = extract_cut_paths(surface, state.is_cut, state.forbidden, state.v, settings.minimum_relative_cut_length);
+  paths = extract_cut_paths(surface, state.is_cut, state.rules, state.v, settings.minimum_relative_cut_length);
   return OK;
 }
 
@@ -286,8 +286,8 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
 template <typename Surface>
 Error_code initial_map(const Surface& surface, Joint_state& state)
 {
-  if(!make_disks(surface, state.is_cut, state.forbidden))
-    return state.forbidden.empty() ? ERROR_NO_TOPOLOGICAL_DISC : ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
+  if(!make_disks(surface, state.is_cut, state.rules))
+    return state.rules.forbidden.empty() ? ERROR_NO_TOPOLOGICAL_DISC : ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
   state.degenerate_faces = build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
@@ -340,7 +340,7 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
 {
   Scoped_timer initialization(state.timings.initialization);
   Coarse_surface coarse;
-  if(!simplify_surface(surface, state.is_cut, state.forbidden, face_lambda, std::size_t(settings.multiresolution_faces),
+  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda, std::size_t(settings.multiresolution_faces),
                        coarse))
     return false;
   initialization.stop();
@@ -358,7 +358,8 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   coarse_settings.lambda *= std::pow(mean_edge_length(surface) / mean_edge_length(coarse.surface), 0.25);
   Joint_state coarse_state;
   coarse_state.is_cut = coarse.is_cut;
-  coarse_state.forbidden = coarse.forbidden;
+  coarse_state.rules.forbidden = coarse.forbidden;
+  coarse_state.rules.edge_factor = edge_lambda_factors(coarse.surface, coarse.face_lambda);
   status = decide_cuts(coarse.surface, coarse.face_lambda, coarse_settings, coarse_state);
   state.newton_iterations += coarse_state.newton_iterations;
   state.factorizations += coarse_state.factorizations;
@@ -369,7 +370,7 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   state.timings.cut_extraction += coarse_state.timings.cut_extraction;
   if(status != OK) return true;
   Scoped_timer extraction(state.timings.cut_extraction);
-  transfer_cuts(surface, coarse, coarse_state.is_cut, state.forbidden, state.is_cut);
+  transfer_cuts(surface, coarse, coarse_state.is_cut, state.rules, state.is_cut);
   if(coarse_state.v.size() > 0) state.v = transfer_face_field(surface, coarse, coarse_state.v);
   extraction.stop();
   Scoped_timer full_resolution(state.timings.initialization);
@@ -385,6 +386,7 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
                               const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
   Error_code status = OK;
   const bool coarse = settings.multiresolution_faces > 0 && settings.passes > 0
                       && surface.number_of_faces() > 2 * std::size_t(settings.multiresolution_faces)
@@ -402,8 +404,8 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   packing_timer.stop();
   // never hand out a silently wrong map (checked in every build type)
   if(!state.x.allFinite() || number_of_flipped_faces(state.chart, state.x) > 0) return ERROR_NO_1_TO_1_MAPPING;
-  for(std::size_t e = 0; e < state.forbidden.size(); ++e)
-    if(state.forbidden[e] && state.is_cut[e]) return ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
+  for(std::size_t e = 0; e < state.rules.forbidden.size(); ++e)
+    if(state.rules.forbidden[e] && state.is_cut[e]) return ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
   if(settings.progress && !settings.progress({"final", settings.passes, 0, settings.alternations_per_pass(),
                                               settings.epsilon_end, state.distortion}))
     return ERROR_CANCELED;

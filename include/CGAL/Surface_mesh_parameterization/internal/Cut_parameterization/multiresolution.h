@@ -198,16 +198,16 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   return true;
 }
 
-/// Cuts on `surface` (the input) the shortest edge path between the input
-/// vertices of each cut edge of the copy that is not on its border, on edges
-/// that are not `forbidden` (empty: none).
+/// Cuts on `surface` (the input) the cheapest edge path for `rules` between
+/// the input vertices of each cut edge of the copy that is not on its
+/// border, never on a forbidden edge.
 template <typename Surface>
 void transfer_cuts(const Surface& surface, const Coarse_surface& coarse, const std::vector<char>& coarse_is_cut,
-                   const std::vector<char>& forbidden, std::vector<char>& is_cut)
+                   const Cut_rules& rules, std::vector<char>& is_cut)
 {
   std::vector<char> usable(surface.edges.size(), 1);
-  for(std::size_t e = 0; e < usable.size(); ++e) usable[e] = char(!is_flagged(forbidden, int(e)));
-  const Edge_graph graph = surface_edge_graph(surface, usable);
+  for(std::size_t e = 0; e < usable.size(); ++e) usable[e] = char(!rules.is_forbidden(int(e)));
+  const Edge_graph graph = surface_edge_graph(surface, usable, rules);
   const Indexed_surface<Coarse_mesh>& cs = coarse.surface;
   Shortest_paths scratch;
   for(int fe = 0; fe < int(cs.twin.size()); ++fe)

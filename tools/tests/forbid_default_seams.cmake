@@ -1,0 +1,77 @@
+# Forbidding every seam of a default run: uv_unwrap on MESH saves its seams
+# (--save-seams, CGAL's selection format), then runs again with those edges
+# forbidden (--forbid). The second run must succeed with a valid atlas (no
+# flipped face, no border crossing) and cut none of the forbidden edges.
+#   cmake -DUV_UNWRAP=<exe> -DMESH=<file> -DWORK_DIR=<dir> -P forbid_default_seams.cmake
+cmake_minimum_required(VERSION 3.19) # string(JSON), IN_LIST
+if(NOT UV_UNWRAP OR NOT MESH OR NOT WORK_DIR)
+  message(FATAL_ERROR "give -DUV_UNWRAP=... -DMESH=... -DWORK_DIR=...")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+
+# the edges of a selection file (its third line) as "a-b" items, a < b
+function(read_edges file out)
+  file(STRINGS "${file}" lines)
+  # file(STRINGS) drops empty lines: the edges are the last line, if any
+  list(LENGTH lines count)
+  set(edges "")
+  if(count GREATER 0)
+    list(GET lines -1 last)
+    string(REGEX REPLACE "[ \t]+" ";" indices "${last}")
+    list(LENGTH indices n)
+    math(EXPR pairs "${n} / 2")
+    foreach(i RANGE 1 ${pairs})
+      math(EXPR first "2 * (${i} - 1)")
+      math(EXPR second "${first} + 1")
+      list(GET indices ${first} a)
+      list(GET indices ${second} b)
+      if(a GREATER b)
+        list(APPEND edges "${b}-${a}")
+      else()
+        list(APPEND edges "${a}-${b}")
+      endif()
+    endforeach()
+  endif()
+  set(${out} "${edges}" PARENT_SCOPE)
+endfunction()
+
+function(unwrap name)
+  execute_process(COMMAND "${UV_UNWRAP}" "${MESH}" -o "${WORK_DIR}/${name}.obj" --stats "${WORK_DIR}/${name}.json"
+                          --save-seams "${WORK_DIR}/${name}.selection.txt" -q ${ARGN}
+                  RESULT_VARIABLE status ERROR_VARIABLE errors)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "uv_unwrap ${name} (${ARGN}) failed with ${status}:\n${errors}")
+  endif()
+  file(READ "${WORK_DIR}/${name}.json" stats)
+  foreach(key flipped_faces border_crossings)
+    string(JSON value GET "${stats}" ${key})
+    if(NOT value EQUAL 0)
+      message(FATAL_ERROR "${name}: ${key} = ${value}")
+    endif()
+  endforeach()
+  string(JSON distortion GET "${stats}" distortion)
+  string(JSON seam_length GET "${stats}" seam_length)
+  message(STATUS "${name}: E_d ${distortion}, E_s ${seam_length}")
+endfunction()
+
+unwrap(default)
+read_edges("${WORK_DIR}/default.selection.txt" forbidden)
+list(LENGTH forbidden forbidden_count)
+if(forbidden_count EQUAL 0)
+  message(FATAL_ERROR "the default run has no seam: nothing to forbid")
+endif()
+
+unwrap(forbidding --forbid "${WORK_DIR}/default.selection.txt")
+read_edges("${WORK_DIR}/forbidding.selection.txt" seams)
+list(LENGTH seams seam_count)
+set(cut_anyway "")
+foreach(e IN LISTS seams)
+  if(e IN_LIST forbidden)
+    list(APPEND cut_anyway "${e}")
+  endif()
+endforeach()
+if(cut_anyway)
+  message(FATAL_ERROR "forbidden edges cut: ${cut_anyway}")
+endif()
+message(STATUS "${forbidden_count} seam edges forbidden; ${seam_count} seam edges found around them, none forbidden")
