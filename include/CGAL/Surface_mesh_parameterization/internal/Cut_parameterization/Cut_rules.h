@@ -35,6 +35,29 @@ struct Cut_rules
   }
 };
 
+/// The λ factors the alternation sees: `face_lambda`, times
+/// `enclosed_factor` on the faces whose three edges are all forbidden (or on
+/// the border). No seam can border such a face, so the field v is kept from
+/// opening there, and the cuts it asks for land where they can be made.
+template <typename Surface>
+std::vector<double> lambda_with_forbidden_faces(const Surface& surface, const std::vector<double>& face_lambda,
+                                                const std::vector<char>& forbidden, double enclosed_factor = 100.)
+{
+  std::vector<double> lambda = face_lambda;
+  if(forbidden.empty()) return lambda;
+  for(std::size_t f = 0; f < lambda.size(); ++f)
+  {
+    bool enclosed = true;
+    for(int k = 0; k < 3; ++k)
+    {
+      const int fe = int(3*f) + k;
+      enclosed = enclosed && (surface.twin[fe] < 0 || forbidden[surface.edge_of[fe]]);
+    }
+    if(enclosed) lambda[f] *= enclosed_factor;
+  }
+  return lambda;
+}
+
 /// Per surface edge: the mean of `face_lambda` over its faces; empty if
 /// every factor is 1.
 template <typename Surface>

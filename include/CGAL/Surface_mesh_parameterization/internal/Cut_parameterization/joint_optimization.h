@@ -382,10 +382,11 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
 /// cut (on a simplified copy for large meshes), the final solve, packing.
 /// Fills the rest of `state`.
 template <typename Surface>
-Error_code joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
+Error_code joint_optimization(const Surface& surface, const std::vector<double>& input_face_lambda,
                               const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
   state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
   Error_code status = OK;
   const bool coarse = settings.multiresolution_faces > 0 && settings.passes > 0
