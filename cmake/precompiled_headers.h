@@ -18,3 +18,5 @@
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "shared_instances.h"

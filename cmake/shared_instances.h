@@ -1,0 +1,34 @@
+// Build speed of the project's own programs (tests, examples, tools,
+// benchmark), not part of the library: the core of cut_and_parameterize()
+// (internal::cut::joint_optimization(), which depends on the mesh type only,
+// not on the property maps or named parameters) is compiled once per common
+// mesh type, in cmake/precompiled_headers.cpp, instead of in every program
+// that calls it. Included by cmake/precompiled_headers.h; a program copied
+// out of the project compiles without it.
+#ifndef CUT_PARAM_SHARED_INSTANCES_H
+#define CUT_PARAM_SHARED_INSTANCES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+
+// CUT_PARAM_FOR_EACH_SHARED_MESH(X) calls X(Mesh) for each shared mesh type:
+// the tests' and examples' meshes, and the tools' (mesh_input::Mesh).
+#define CUT_PARAM_FOR_EACH_SHARED_MESH(X)                                       \
+  X(CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>)                \
+  X(CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>>)                         \
+  X(CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>)
+
+// The instance of one mesh type, declared here and defined (without
+// `extern`) in cmake/precompiled_headers.cpp.
+#define CUT_PARAM_SHARED_INSTANCE(KEYWORD, ...)                                                         \
+  namespace CGAL { namespace Surface_mesh_parameterization { namespace internal { namespace cut {       \
+  KEYWORD template Error_code joint_optimization<Indexed_surface<__VA_ARGS__>>(                         \
+    const Indexed_surface<__VA_ARGS__>&, const std::vector<double>&, const Joint_settings&, Joint_state&); \
+  }}}}
+#define CUT_PARAM_DECLARE_SHARED_INSTANCE(...) CUT_PARAM_SHARED_INSTANCE(extern, __VA_ARGS__)
+CUT_PARAM_FOR_EACH_SHARED_MESH(CUT_PARAM_DECLARE_SHARED_INSTANCE)
+
+#endif
