@@ -137,7 +137,7 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
   using edge_descriptor = typename GT::edge_descriptor;
   using face_descriptor = typename GT::face_descriptor;
   Chart_report<Mesh> report;
-  REQUIRE_MSG(run.result.ok(), "cut_and_parameterize failed: " << SMP_::error_name(run.result.error));
+  CUT_ASSERT_TRUE(run.result.ok()) << "cut_and_parameterize failed: " << SMP_::error_name(run.result.error);
 
   // --- seams are interior mesh edges; their count is the reported one
   std::size_t seam_edges = 0;
@@ -145,9 +145,9 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     if(run.is_seam(e))
     {
       ++seam_edges;
-      CHECK_MSG(!is_border(e, mesh), "a seam edge is on the mesh's boundary");
+      EXPECT_TRUE(!is_border(e, mesh)) << "a seam edge is on the mesh's boundary";
     }
-  CHECK_EQ(seam_edges, run.result.number_of_seam_edges);
+  EXPECT_EQ(seam_edges, run.result.number_of_seam_edges);
 
   // --- per connected component of the mesh, the seams together with the
   // input border form one connected graph: a chart's boundary is one loop,
@@ -194,8 +194,8 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
         std::sort(counts.begin(), counts.end());
         std::ostringstream sizes;
         for(std::size_t c : counts) sizes << " " << c;
-        CHECK_MSG(false, "the seams and border of a mesh component form " << entry.second.size()
-                         << " separate pieces (edges:" << sizes.str() << "): some seam floats inside a chart");
+        EXPECT_TRUE(false) << "the seams and border of a mesh component form " << entry.second.size()
+                         << " separate pieces (edges:" << sizes.str() << "): some seam floats inside a chart";
       }
   }
 
@@ -212,10 +212,10 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
     if(!(area2 > 0.)) ++flipped;
   }
-  CHECK_EQ(non_finite, std::size_t(0));
-  CHECK_EQ(flipped, std::size_t(0));
-  CHECK_EQ(SMP_::number_of_flipped_faces(mesh, const_cast<Cut_run<Mesh>&>(run).uvs()), std::size_t(0));
-  REQUIRE(non_finite == 0);
+  EXPECT_EQ(non_finite, std::size_t(0));
+  EXPECT_EQ(flipped, std::size_t(0));
+  EXPECT_EQ(SMP_::number_of_flipped_faces(mesh, const_cast<Cut_run<Mesh>&>(run).uvs()), std::size_t(0));
+  CUT_ASSERT_TRUE(non_finite == 0);
 
   // --- corner classes: corner = face halfedge h (the corner at target(h) in
   // face(h)); across an uncut interior edge the corners at each end are one
@@ -263,12 +263,12 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     const Point_2& q = run.uv(corners[find(int(c))]);
     if(p != q) ++class_mismatch;
   }
-  CHECK_MSG(class_mismatch == 0, class_mismatch << " corners differ from their class across uncut edges");
+  EXPECT_TRUE(class_mismatch == 0) << class_mismatch << " corners differ from their class across uncut edges";
   // border halfedges carry the UV of the corner at their target in the face across
   std::size_t border_mismatch = 0;
   for(halfedge_descriptor b : halfedges(mesh))
     if(is_border(b, mesh) && run.uv(b) != run.uv(prev(opposite(b, mesh), mesh))) ++border_mismatch;
-  CHECK_EQ(border_mismatch, std::size_t(0));
+  EXPECT_EQ(border_mismatch, std::size_t(0));
 
   // --- charts
   std::unordered_map<int, int> chart_id;
@@ -279,7 +279,7 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
   }
   const std::size_t n_charts = chart_id.size();
   report.number_of_charts = n_charts;
-  CHECK_EQ(run.result.number_of_charts, n_charts);
+  EXPECT_EQ(run.result.number_of_charts, n_charts);
 
   // a corner class lies in one chart (classes are joined only across uncut edges)
   std::vector<int> chart_of_class(corners.size(), -1);
@@ -291,7 +291,7 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     if(k < 0) k = chart;
     else if(k != chart) ++class_in_two_charts;
   }
-  CHECK_EQ(class_in_two_charts, std::size_t(0));
+  EXPECT_EQ(class_in_two_charts, std::size_t(0));
 
   // Euler characteristic V - E + F per chart: V = classes, E = boundary
   // halfedges + interior halfedges / 2, F = faces
@@ -316,7 +316,7 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     else
       E2[chart] += 1;
   }
-  CHECK_MSG(boundary_non_manifold == 0, boundary_non_manifold << " cut-mesh vertices with several boundary sectors");
+  EXPECT_TRUE(boundary_non_manifold == 0) << boundary_non_manifold << " cut-mesh vertices with several boundary sectors";
   report.euler.assign(n_charts, 0);
   report.loops.assign(n_charts, 0);
   for(std::size_t k = 0; k < n_charts; ++k) report.euler[k] = V[k] - E2[k] / 2 + F[k];
@@ -339,10 +339,10 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
     if(report.euler[k] != 1 || report.loops[k] != 1)
     {
       ++not_disks;
-      CHECK_MSG(false, "chart " << k << " is not a disk: chi " << report.euler[k] << ", "
-                                << report.loops[k] << " boundary loops, " << F[k] << " faces");
+      EXPECT_TRUE(false) << "chart " << k << " is not a disk: chi " << report.euler[k] << ", "
+                                << report.loops[k] << " boundary loops, " << F[k] << " faces";
     }
-  CHECK_EQ(not_disks, std::size_t(0));
+  EXPECT_EQ(not_disks, std::size_t(0));
 
   // --- chart UV bounding boxes pairwise disjoint
   const double inf = std::numeric_limits<double>::infinity();
@@ -365,17 +365,17 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
       const bool disjoint = A[2] < B[0] || B[2] < A[0] || A[3] < B[1] || B[3] < A[1];
       if(!disjoint) ++overlapping;
     }
-  CHECK_MSG(overlapping == 0, overlapping << " pairs of charts with overlapping UV bounding boxes");
+  EXPECT_TRUE(overlapping == 0) << overlapping << " pairs of charts with overlapping UV bounding boxes";
 
   // --- the atlas: no crossing border (unless allowed), UVs in the unit
   // square (unless in world units), the reported coverage and crossings
   auto& mutable_run = const_cast<Cut_run<Mesh>&>(run);
   const std::size_t crossings = SMP_::number_of_border_crossings(mesh, mutable_run.uvs());
-  CHECK_EQ(crossings, run.result.border_crossings);
-  if(run.injective) CHECK_EQ(crossings, std::size_t(0));
-  CHECK(run.result.uv_scale > 0. && std::isfinite(run.result.uv_scale));
+  EXPECT_EQ(crossings, run.result.border_crossings);
+  if(run.injective) EXPECT_EQ(crossings, std::size_t(0));
+  EXPECT_TRUE(run.result.uv_scale > 0. && std::isfinite(run.result.uv_scale));
   if(run.world_units)
-    CHECK_EQ(run.result.uv_scale, 1.);
+    EXPECT_EQ(run.result.uv_scale, 1.);
   else
   {
     std::size_t outside = 0;
@@ -384,19 +384,19 @@ Chart_report<Mesh> check_cut_result(const Mesh& mesh, const Cut_run<Mesh>& run)
       const Point_2& p = run.uv(h);
       if(!(p.x() >= 0. && p.x() <= 1. && p.y() >= 0. && p.y() <= 1.)) ++outside;
     }
-    CHECK_MSG(outside == 0, outside << " UVs outside the unit square");
-    CHECK_REL(SMP_::uv_area(mesh, mutable_run.uvs()), run.result.uv_coverage, 1e-9);
+    EXPECT_TRUE(outside == 0) << outside << " UVs outside the unit square";
+    EXPECT_REL(SMP_::uv_area(mesh, mutable_run.uvs()), run.result.uv_coverage, 1e-9);
   }
 
   // --- reported E_d and E_s are those of the outputs (E_d in 3D units)
   const double energy = SMP_::distortion_energy(mesh, mutable_run.uvs(), SMP_::parameters::uv_scale(run.result.uv_scale));
-  CHECK(std::isfinite(run.result.distortion) && run.result.distortion >= 4. - 1e-9);
-  CHECK_REL(energy, run.result.distortion, 1e-9);
+  EXPECT_TRUE(std::isfinite(run.result.distortion) && run.result.distortion >= 4. - 1e-9);
+  EXPECT_REL(energy, run.result.distortion, 1e-9);
   double seam_length = 0.;
   for(edge_descriptor e : edges(mesh))
     if(run.is_seam(e)) seam_length += edge_length_3(mesh, e);
   const double expected_es = seam_length / std::sqrt(SMP_::surface_area(mesh) / pi);
-  CHECK_NEAR(run.result.seam_length, expected_es, 1e-9 * (1. + expected_es));
+  EXPECT_NEAR(run.result.seam_length, expected_es, 1e-9 * (1. + expected_es));
   report.valid = true;
   return report;
 }

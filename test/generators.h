@@ -16,7 +16,7 @@
 #ifndef CUT_PARAM_TEST_GENERATORS_H
 #define CUT_PARAM_TEST_GENERATORS_H
 
-#include "test_harness.h"
+#include "test_support.h"
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -44,11 +44,10 @@ using Point_3 = Kernel::Point_3;
 using Surface_mesh = CGAL::Surface_mesh<Point_3>;
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 
-/// The mesh types every mesh test is instantiated for.
-using Mesh_types = Type_list<Surface_mesh, Polyhedron>;
-
-template <> struct Type_name<Surface_mesh> { static std::string get() { return "Surface_mesh"; } };
-template <> struct Type_name<Polyhedron> { static std::string get() { return "Polyhedron_3"; } };
+/// The mesh types every typed test is instantiated for:
+/// TYPED_TEST_SUITE(Suite, Mesh_types). CTest names the cases Suite.case<0>
+/// (Surface_mesh) and Suite.case<1> (Polyhedron_3).
+using Mesh_types = ::testing::Types<Surface_mesh, Polyhedron>;
 
 /// splitmix64: small, portable, reproducible.
 class Rng

@@ -41,8 +41,8 @@ template <typename Mesh>
 double uncut_distortion(const Mesh& mesh)
 {
   auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
-  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
-  CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+  CUT_ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+  EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
   return SMP::distortion_energy(mesh, uv);
 }
 
@@ -72,19 +72,18 @@ void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<
   auto seam_mesh = SMP::make_seam_mesh(mesh, sem, svm); // CGAL's parameterize() wants it non-const
   using Seam_mesh = decltype(seam_mesh);
   const long chi = long(num_vertices(seam_mesh)) - long(num_edges(seam_mesh)) + long(num_faces(seam_mesh));
-  CHECK_EQ(chi, 1L);
-  CHECK_EQ(number_of_border_cycles(seam_mesh), std::size_t(1));
+  EXPECT_EQ(chi, 1L);
+  EXPECT_EQ(number_of_border_cycles(seam_mesh), std::size_t(1));
   const auto border = PMP::longest_border(seam_mesh).first;
-  REQUIRE(border != boost::graph_traits<Seam_mesh>::null_halfedge());
+  ASSERT_TRUE(border != boost::graph_traits<Seam_mesh>::null_halfedge());
   // the UVs of cut_and_parameterize are a valid vertex UV map of the seam mesh
   auto& r = const_cast<Cut_run<Mesh>&>(run);
-  CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, r.uvs()), std::size_t(0));
-  CHECK_REL(SMP::distortion_energy(seam_mesh, r.uvs(), SMP::parameters::uv_scale(run.result.uv_scale)),
-            run.result.distortion, 1e-9);
+  EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, r.uvs()), std::size_t(0));
+  EXPECT_REL(SMP::distortion_energy(seam_mesh, r.uvs(), SMP::parameters::uv_scale(run.result.uv_scale)), run.result.distortion, 1e-9);
   {
     auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
     const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), border, uv);
-    CHECK_MSG(status == SMP::OK, "LSCM on the seam mesh: " << SMP::error_message(status));
+    EXPECT_TRUE(status == SMP::OK) << "LSCM on the seam mesh: " << SMP::error_message(status);
     std::size_t non_finite = 0;
     for(auto h : halfedges(mesh))
       if(!is_border(h, mesh))
@@ -92,7 +91,7 @@ void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<
         const Point_2 p = get(uv, target(typename boost::graph_traits<Seam_mesh>::halfedge_descriptor(h), seam_mesh));
         if(!std::isfinite(p.x()) || !std::isfinite(p.y())) ++non_finite;
       }
-    CHECK_EQ(non_finite, std::size_t(0));
+    EXPECT_EQ(non_finite, std::size_t(0));
   }
   {
     auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
@@ -100,8 +99,7 @@ void check_cgal_parameterizers_accept_the_seams(const Mesh& mesh, const Cut_run<
     // reports ERROR_NON_CONVEX_BORDER when that result's border overlaps
     // itself (spike); that is about ARAP's map, not about the seam mesh.
     const SMP::Error_code status = SMP::parameterize(seam_mesh, SMP::ARAP_parameterizer_3<Seam_mesh>(), border, uv);
-    CHECK_MSG(status == SMP::OK || status == SMP::ERROR_NON_CONVEX_BORDER,
-              "ARAP on the seam mesh: " << SMP::error_message(status));
+    EXPECT_TRUE(status == SMP::OK || status == SMP::ERROR_NON_CONVEX_BORDER) << "ARAP on the seam mesh: " << SMP::error_message(status);
   }
 }
 
@@ -123,17 +121,17 @@ void check_timings(const SMP::Cut_and_parameterize_result& r, bool completed = t
   double sum = 0.;
   for(const double x : parts)
   {
-    CHECK_MSG(std::isfinite(x) && x >= 0., "phase time " << x);
+    EXPECT_TRUE(std::isfinite(x) && x >= 0.) << "phase time " << x;
     sum += x;
   }
-  CHECK_MSG(std::isfinite(t.total) && t.total > 0., "total time " << t.total);
+  EXPECT_TRUE(std::isfinite(t.total) && t.total > 0.) << "total time " << t.total;
   // the phases are disjoint intervals inside the total's
-  CHECK_MSG(sum <= t.total * (1. + 1e-9) + 1e-6, "phases " << sum << " s, total " << t.total << " s");
-  CHECK(r.number_of_factorizations >= r.newton_iterations);
+  EXPECT_TRUE(sum <= t.total * (1. + 1e-9) + 1e-6) << "phases " << sum << " s, total " << t.total << " s";
+  EXPECT_TRUE(r.number_of_factorizations >= r.newton_iterations);
   if(completed)
   {
-    CHECK(r.newton_iterations > 0);
-    CHECK(t.initialization > 0. && t.final_solve > 0.);
+    EXPECT_TRUE(r.newton_iterations > 0);
+    EXPECT_TRUE(t.initialization > 0. && t.final_solve > 0.);
   }
 }
 
@@ -147,128 +145,133 @@ Soup spike() { return spike_disk_soup(16, 32, 1.5, 0.2); } // 992 faces
 
 // --- obvious places to cut --------------------------------------------------
 
-CUT_TYPED_TEST(cone_is_cut_to_its_apex, Mesh_types)
+template <typename Mesh>
+class CutAndParameterizeTyped : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE(CutAndParameterizeTyped, Mesh_types);
+
+TYPED_TEST(CutAndParameterizeTyped, cone_is_cut_to_its_apex)
 {
   const Soup soup = tall_cone();
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
-  const vertex_t<TestType> apex = vertex_of[0];
-  REQUIRE(std::abs(get(get(CGAL::vertex_point, mesh), apex).z() - cone_height) < 1e-12);
+  const vertex_t<TypeParam> apex = vertex_of[0];
+  ASSERT_TRUE(std::abs(get(get(CGAL::vertex_point, mesh), apex).z() - cone_height) < 1e-12);
   const double uncut = uncut_distortion(mesh);
 
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   run.run();
   const auto report = check_cut_result(mesh, run);
   print("cone", run.result, uncut);
-  REQUIRE(report.valid);
-  CHECK(run.result.number_of_seam_edges > 0);
+  ASSERT_TRUE(report.valid);
+  EXPECT_TRUE(run.result.number_of_seam_edges > 0);
   // a seam reaches the apex or its one-ring (the apex is the only curved point)
   const auto on_seam = seam_vertices(mesh, run);
   bool near_apex = on_seam.count(apex) > 0;
   for(auto w : vertices_around_target(halfedge(apex, mesh), mesh)) near_apex = near_apex || on_seam.count(w) > 0;
-  CHECK_MSG(near_apex, "no seam vertex in the apex's one-ring");
+  EXPECT_TRUE(near_apex) << "no seam vertex in the apex's one-ring";
   // and it is connected to the border (else the chart would not be a disk,
   // checked above); at least half of the excess distortion goes away (a
   // straight seam from the apex to the border gives E_d = 4)
-  CHECK_MSG(run.result.distortion < uncut - 0.5 && run.result.distortion < 0.5 * (uncut + 4.),
-            "E_d " << run.result.distortion << " vs uncut " << uncut);
-  CHECK(run.result.initial_distortion > run.result.distortion);
+  EXPECT_TRUE(run.result.distortion < uncut - 0.5 && run.result.distortion < 0.5 * (uncut + 4.)) << "E_d " << run.result.distortion << " vs uncut " << uncut;
+  EXPECT_TRUE(run.result.initial_distortion > run.result.distortion);
   check_timings(run.result);
-  CHECK(run.result.timings.u_steps > 0. && run.result.timings.v_steps > 0.);
+  EXPECT_TRUE(run.result.timings.u_steps > 0. && run.result.timings.v_steps > 0.);
   check_cgal_parameterizers_accept_the_seams(mesh, run);
 }
 
-CUT_TYPED_TEST(deep_bowl_is_cut_from_its_border, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, deep_bowl_is_cut_from_its_border)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   const double uncut = uncut_distortion(mesh);
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   run.run();
   const auto report = check_cut_result(mesh, run);
   print("deep bowl", run.result, uncut);
-  REQUIRE(report.valid);
-  CHECK(run.result.number_of_seam_edges > 0);
+  ASSERT_TRUE(report.valid);
+  EXPECT_TRUE(run.result.number_of_seam_edges > 0);
   // seams of a disk whose chart stays a disk start at the border
   bool touches_border = false;
   for(auto v : seam_vertices(mesh, run)) touches_border = touches_border || is_border(v, mesh);
-  CHECK(touches_border);
-  CHECK_MSG(run.result.distortion < uncut - 0.3, "E_d " << run.result.distortion << " vs uncut " << uncut);
+  EXPECT_TRUE(touches_border);
+  EXPECT_TRUE(run.result.distortion < uncut - 0.3) << "E_d " << run.result.distortion << " vs uncut " << uncut;
   if(report.number_of_charts == 1) check_cgal_parameterizers_accept_the_seams(mesh, run);
 }
 
-CUT_TYPED_TEST(spike_is_cut, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, spike_is_cut)
 {
   const double height = 1.5;
   const Soup soup = spike();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   const double uncut = uncut_distortion(mesh);
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   run.run();
   const auto report = check_cut_result(mesh, run);
   print("spike", run.result, uncut);
-  REQUIRE(report.valid);
+  ASSERT_TRUE(report.valid);
   // seams climb the spike: some seam vertex is above half its height
   double highest = -1.;
   for(auto v : seam_vertices(mesh, run)) highest = (std::max)(highest, get(get(CGAL::vertex_point, mesh), v).z());
-  CHECK_MSG(highest > 0.5 * height, "highest seam vertex at z = " << highest);
-  CHECK_MSG(run.result.distortion < uncut - 0.5, "E_d " << run.result.distortion << " vs uncut " << uncut);
+  EXPECT_TRUE(highest > 0.5 * height) << "highest seam vertex at z = " << highest;
+  EXPECT_TRUE(run.result.distortion < uncut - 0.5) << "E_d " << run.result.distortion << " vs uncut " << uncut;
   if(report.number_of_charts == 1) check_cgal_parameterizers_accept_the_seams(mesh, run);
 }
 
 // --- contract of the options -------------------------------------------------
 
-CUT_TYPED_TEST(scale_invariance, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, scale_invariance)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   run.run();
-  REQUIRE(run.result.ok());
+  ASSERT_TRUE(run.result.ok());
   for(const double s : {1e-3, 1e3})
   {
-    Scoped_context ctx("scale " + to_text(s));
+    SCOPED_TRACE("scale " + to_text(s));
     Soup scaled = soup;
     scaled.scale(s);
-    TestType other;
+    TypeParam other;
     build_mesh(scaled, other);
-    Cut_run<TestType> other_run(other);
+    Cut_run<TypeParam> other_run(other);
     other_run.run();
     check_cut_result(other, other_run);
-    CHECK(other_run.seam_vector() == run.seam_vector());
-    CHECK_EQ(other_run.result.number_of_seam_edges, run.result.number_of_seam_edges);
-    CHECK_REL(other_run.result.distortion, run.result.distortion, 1e-6);
-    CHECK_REL(other_run.result.seam_length, run.result.seam_length, 1e-6);
+    EXPECT_TRUE(other_run.seam_vector() == run.seam_vector());
+    EXPECT_EQ(other_run.result.number_of_seam_edges, run.result.number_of_seam_edges);
+    EXPECT_REL(other_run.result.distortion, run.result.distortion, 1e-6);
+    EXPECT_REL(other_run.result.seam_length, run.result.seam_length, 1e-6);
   }
 }
 
-CUT_TYPED_TEST(determinism, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, determinism)
 {
   const Soup soup = spike();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
-  Cut_run<TestType> a(mesh), b(mesh);
+  Cut_run<TypeParam> a(mesh), b(mesh);
   a.run();
   b.run();
-  REQUIRE(a.result.ok() && b.result.ok());
-  CHECK(a.seam_vector() == b.seam_vector());
+  ASSERT_TRUE(a.result.ok() && b.result.ok());
+  EXPECT_TRUE(a.seam_vector() == b.seam_vector());
   const auto ua = a.uv_vector(), ub = b.uv_vector();
-  REQUIRE_EQ(ua.size(), ub.size());
+  ASSERT_EQ(ua.size(), ub.size());
   std::size_t differ = 0;
   for(std::size_t i = 0; i < ua.size(); ++i)
     if(!(ua[i].x() == ub[i].x() && ua[i].y() == ub[i].y())) ++differ;
-  CHECK_EQ(differ, std::size_t(0));
-  CHECK(a.result.distortion == b.result.distortion);
-  CHECK_EQ(a.result.newton_iterations, b.result.newton_iterations);
+  EXPECT_EQ(differ, std::size_t(0));
+  EXPECT_TRUE(a.result.distortion == b.result.distortion);
+  EXPECT_EQ(a.result.newton_iterations, b.result.newton_iterations);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 // Parallel loops write per-index slots and reduce in index order: the
 // output must not depend on how many threads run them.
-CUT_TEST(determinism_across_thread_counts)
+TEST(CutAndParameterize, determinism_across_thread_counts)
 {
   using Mesh = Surface_mesh;
   const Mesh mesh = make_mesh<Mesh>(spike_disk_soup(24, 48, 1.5, 0.2)); // over 2000 faces: loops split
@@ -278,30 +281,30 @@ CUT_TEST(determinism_across_thread_counts)
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     Cut_run<Mesh> run(mesh);
-    REQUIRE(run.run().ok());
+    ASSERT_TRUE(run.run().ok());
     uvs.push_back(run.uv_vector());
     seams.push_back(run.seam_vector());
   }
   for(std::size_t i = 1; i < uvs.size(); ++i)
   {
-    CHECK(seams[i] == seams[0]);
-    REQUIRE_EQ(uvs[i].size(), uvs[0].size());
+    EXPECT_TRUE(seams[i] == seams[0]);
+    ASSERT_EQ(uvs[i].size(), uvs[0].size());
     std::size_t differ = 0;
     for(std::size_t k = 0; k < uvs[0].size(); ++k)
       if(std::memcmp(&uvs[i][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
-    CHECK_EQ(differ, std::size_t(0));
+    EXPECT_EQ(differ, std::size_t(0));
   }
 }
 #endif
 
-CUT_TYPED_TEST(user_seams_are_kept, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, user_seams_are_kept)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   auto vpm = get(CGAL::vertex_point, mesh);
   // a path from the border vertex of smallest x to a vertex near the pole
-  vertex_t<TestType> from = *vertices(mesh).begin(), to = from;
+  vertex_t<TypeParam> from = *vertices(mesh).begin(), to = from;
   bool found_border = false;
   for(auto v : vertices(mesh))
   {
@@ -313,38 +316,38 @@ CUT_TYPED_TEST(user_seams_are_kept, Mesh_types)
     const auto p = get(vpm, v), q = get(vpm, to);
     if(std::abs(p.z() - 0.95) + std::abs(p.y()) < std::abs(q.z() - 0.95) + std::abs(q.y())) to = v;
   }
-  REQUIRE(is_border(from, mesh));
+  ASSERT_TRUE(is_border(from, mesh));
   const auto user = shortest_edge_path(mesh, from, to);
-  REQUIRE(user.size() >= 5);
-  Cut_run<TestType> run(mesh);
+  ASSERT_TRUE(user.size() >= 5);
+  Cut_run<TypeParam> run(mesh);
   for(auto e : user) run.seam_storage[e] = true;
   run.run();
   check_cut_result(mesh, run);
   std::size_t kept = 0;
   for(auto e : user) kept += run.is_seam(e) ? 1 : 0;
-  CHECK_EQ(kept, user.size());
-  CHECK(run.result.number_of_seam_edges >= user.size());
+  EXPECT_EQ(kept, user.size());
+  EXPECT_TRUE(run.result.number_of_seam_edges >= user.size());
 
   // a user seam on the border is not a seam (seams are interior edges)
-  Cut_run<TestType> border_run(mesh);
+  Cut_run<TypeParam> border_run(mesh);
   const auto border_edge = edge(halfedge(from, mesh), mesh);
-  REQUIRE(is_border(border_edge, mesh));
+  ASSERT_TRUE(is_border(border_edge, mesh));
   border_run.seam_storage[border_edge] = true;
   border_run.run();
   check_cut_result(mesh, border_run);
-  CHECK(!border_run.is_seam(border_edge));
+  EXPECT_TRUE(!border_run.is_seam(border_edge));
 }
 
-CUT_TYPED_TEST(face_lambda_map_keeps_seams_out_of_a_region, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, face_lambda_map_keeps_seams_out_of_a_region)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   auto vpm = get(CGAL::vertex_point, mesh);
-  Cut_run<TestType> plain(mesh);
+  Cut_run<TypeParam> plain(mesh);
   plain.run();
   check_cut_result(mesh, plain);
-  REQUIRE(plain.result.number_of_seam_edges > 0);
+  ASSERT_TRUE(plain.result.number_of_seam_edges > 0);
   // mean direction (angle around the axis) of the seams found
   double sx = 0., sy = 0.;
   for(auto v : seam_vertices(mesh, plain))
@@ -373,8 +376,8 @@ CUT_TYPED_TEST(face_lambda_map_keeps_seams_out_of_a_region, Mesh_types)
     put(lambda, f, in ? 100. : 1.);
     protected_faces += in ? 1 : 0;
   }
-  REQUIRE(protected_faces > 50);
-  auto seams_in_region = [&](const Cut_run<TestType>& run) {
+  ASSERT_TRUE(protected_faces > 50);
+  auto seams_in_region = [&](const Cut_run<TypeParam>& run) {
     std::size_t n = 0;
     for(auto e : edges(mesh))
     {
@@ -385,21 +388,21 @@ CUT_TYPED_TEST(face_lambda_map_keeps_seams_out_of_a_region, Mesh_types)
     return n;
   };
   const std::size_t before = seams_in_region(plain);
-  CHECK(before > 0);
-  Cut_run<TestType> weighted(mesh);
+  EXPECT_TRUE(before > 0);
+  Cut_run<TypeParam> weighted(mesh);
   weighted.run(SMP::parameters::face_lambda_map(lambda));
   check_cut_result(mesh, weighted);
   const std::size_t after = seams_in_region(weighted);
   std::cout << "    seam edges in the protected region: " << before << " without the map, " << after
             << " with it (" << weighted.result.number_of_seam_edges << " in all)" << std::endl;
-  CHECK(after < before);
-  CHECK(weighted.result.number_of_seam_edges > 0); // the bowl still needs a cut, elsewhere
+  EXPECT_TRUE(after < before);
+  EXPECT_TRUE(weighted.result.number_of_seam_edges > 0); // the bowl still needs a cut, elsewhere
 }
 
-CUT_TYPED_TEST(progress_callback_and_cancel, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, progress_callback_and_cancel)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   using Progress = SMP::Cut_and_parameterize_progress;
   struct Call { std::string phase; int pass, alternation, per_pass; double epsilon; };
@@ -408,77 +411,77 @@ CUT_TYPED_TEST(progress_callback_and_cancel, Mesh_types)
     calls.push_back({p.phase, p.pass, p.alternation, p.alternations_per_pass, p.epsilon});
     return true;
   };
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   run.run(SMP::parameters::progress_callback(record, SMP::parameters::number_of_passes(2)));
   check_cut_result(mesh, run);
-  REQUIRE(!calls.empty());
-  CHECK_EQ(calls.front().phase, std::string("initialize"));
-  CHECK_EQ(calls.back().phase, std::string("final"));
+  ASSERT_TRUE(!calls.empty());
+  EXPECT_EQ(calls.front().phase, std::string("initialize"));
+  EXPECT_EQ(calls.back().phase, std::string("final"));
   // defaults: ε = 0.1, 0.05, 0.025, 0.0125 (> 0.01), 3 alternations each
   std::map<int, std::vector<Call>> alternations;
   for(const Call& c : calls)
   {
-    CHECK_EQ(c.per_pass, 12);
+    EXPECT_EQ(c.per_pass, 12);
     if(c.phase == "alternate") alternations[c.pass].push_back(c);
   }
-  CHECK(alternations.size() >= 1);
+  EXPECT_TRUE(alternations.size() >= 1);
   for(const auto& entry : alternations)
   {
-    Scoped_context ctx("pass " + std::to_string(entry.first));
+    SCOPED_TRACE("pass " + std::to_string(entry.first));
     const auto& list = entry.second;
-    CHECK_EQ(list.size(), std::size_t(12));
+    EXPECT_EQ(list.size(), std::size_t(12));
     for(std::size_t i = 0; i < list.size(); ++i)
     {
-      CHECK_EQ(list[i].alternation, int(i) + 1); // increasing, from 1
-      if(i > 0) CHECK(list[i].epsilon <= list[i - 1].epsilon);
+      EXPECT_EQ(list[i].alternation, int(i) + 1); // increasing, from 1
+      if(i > 0) EXPECT_TRUE(list[i].epsilon <= list[i - 1].epsilon);
     }
     if(!list.empty())
     {
-      CHECK_NEAR(list.front().epsilon, 0.1, 1e-15);
-      CHECK_NEAR(list.back().epsilon, 0.0125, 1e-15);
+      EXPECT_NEAR(list.front().epsilon, 0.1, 1e-15);
+      EXPECT_NEAR(list.back().epsilon, 0.0125, 1e-15);
     }
   }
 
   // returning false stops the run; the outputs are left as they were
   for(const int stop_at : {0, 3})
   {
-    Scoped_context ctx("cancel after " + std::to_string(stop_at) + " alternations");
+    SCOPED_TRACE("cancel after " + std::to_string(stop_at) + " alternations");
     int seen = 0;
     const std::function<bool(const Progress&)> cancel = [&](const Progress& p) {
       ++seen;
       return !(std::string(p.phase) == "initialize" ? stop_at == 0 : p.alternation >= stop_at);
     };
-    Cut_run<TestType> canceled(mesh);
+    Cut_run<TypeParam> canceled(mesh);
     const auto some_edge = *edges(mesh).begin();
     canceled.seam_storage[some_edge] = false;
     for(auto& entry : canceled.uv_storage) entry.second = Point_2(-7., 13.);
     canceled.run(SMP::parameters::progress_callback(cancel));
-    CHECK_EQ(canceled.result.error, SMP::ERROR_CANCELED);
+    EXPECT_EQ(canceled.result.error, SMP::ERROR_CANCELED);
     check_timings(canceled.result, false);
-    CHECK_EQ(seen, stop_at == 0 ? 1 : stop_at + 1);
-    CHECK_EQ(canceled.number_of_seam_edges(), std::size_t(0));
+    EXPECT_EQ(seen, stop_at == 0 ? 1 : stop_at + 1);
+    EXPECT_EQ(canceled.number_of_seam_edges(), std::size_t(0));
     std::size_t changed = 0;
     for(const auto& entry : canceled.uv_storage) changed += entry.second != Point_2(-7., 13.) ? 1 : 0;
-    CHECK_EQ(changed, std::size_t(0));
+    EXPECT_EQ(changed, std::size_t(0));
   }
 }
 
-CUT_TYPED_TEST(invalid_parameters, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, invalid_parameters)
 {
   const Soup soup = cone_soup(4, 12);
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
   namespace P = SMP::parameters;
   auto expect_wrong = [&](const auto& np, const char* what) {
-    Scoped_context ctx(what);
-    Cut_run<TestType> run(mesh);
+    SCOPED_TRACE(what);
+    Cut_run<TypeParam> run(mesh);
     for(auto& entry : run.uv_storage) entry.second = Point_2(-7., 13.);
     run.run(np);
-    CHECK_EQ(run.result.error, SMP::ERROR_WRONG_PARAMETER);
-    CHECK_EQ(run.number_of_seam_edges(), std::size_t(0));
+    EXPECT_EQ(run.result.error, SMP::ERROR_WRONG_PARAMETER);
+    EXPECT_EQ(run.number_of_seam_edges(), std::size_t(0));
     std::size_t changed = 0;
     for(const auto& entry : run.uv_storage) changed += entry.second != Point_2(-7., 13.) ? 1 : 0;
-    CHECK_EQ(changed, std::size_t(0));
+    EXPECT_EQ(changed, std::size_t(0));
   };
   expect_wrong(P::lambda(-1.), "lambda -1");
   expect_wrong(P::lambda(0.), "lambda 0");
@@ -493,17 +496,17 @@ CUT_TYPED_TEST(invalid_parameters, Mesh_types)
   put(negative, *faces(mesh).begin(), -2.);
   expect_wrong(P::face_lambda_map(negative), "a negative face lambda");
   // and a valid set of the same options works
-  Cut_run<TestType> ok(mesh);
+  Cut_run<TypeParam> ok(mesh);
   ok.run(P::lambda(0.5, P::epsilon_start(0.2, P::epsilon_end(0.02, P::iterations_per_epsilon(2)))));
   check_cut_result(mesh, ok);
 }
 
-CUT_TYPED_TEST(two_passes_extend_the_seams_of_one, Mesh_types)
+TYPED_TEST(CutAndParameterizeTyped, two_passes_extend_the_seams_of_one)
 {
   const Soup soup = bowl();
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
-  Cut_run<TestType> one(mesh), two(mesh);
+  Cut_run<TypeParam> one(mesh), two(mesh);
   one.run(SMP::parameters::number_of_passes(1));
   two.run(SMP::parameters::number_of_passes(2));
   check_cut_result(mesh, one);
@@ -516,18 +519,16 @@ CUT_TYPED_TEST(two_passes_extend_the_seams_of_one, Mesh_types)
   std::size_t lost = 0;
   for(auto e : edges(mesh))
     if(one.is_seam(e) && !two.is_seam(e)) ++lost;
-  CHECK_EQ(lost, std::size_t(0));
-  CHECK(two.result.number_of_seam_edges >= one.result.number_of_seam_edges);
-  CHECK_MSG(two.result.distortion <= one.result.distortion + 1e-3,
-            "E_d 2 passes " << two.result.distortion << " vs 1 pass " << one.result.distortion);
+  EXPECT_EQ(lost, std::size_t(0));
+  EXPECT_TRUE(two.result.number_of_seam_edges >= one.result.number_of_seam_edges);
+  EXPECT_TRUE(two.result.distortion <= one.result.distortion + 1e-3) << "E_d 2 passes " << two.result.distortion << " vs 1 pass " << one.result.distortion;
   // no pass: only the initial cut (none for a disk), i.e. the uncut optimum
-  Cut_run<TestType> none(mesh);
+  Cut_run<TypeParam> none(mesh);
   none.run(SMP::parameters::number_of_passes(0));
   check_cut_result(mesh, none);
   check_timings(none.result);
-  CHECK(none.result.timings.u_steps == 0. && none.result.timings.v_steps == 0.);
-  CHECK_EQ(none.result.number_of_seam_edges, std::size_t(0));
-  CHECK_REL(none.result.distortion, uncut_distortion(mesh), 1e-3);
+  EXPECT_TRUE(none.result.timings.u_steps == 0. && none.result.timings.v_steps == 0.);
+  EXPECT_EQ(none.result.number_of_seam_edges, std::size_t(0));
+  EXPECT_REL(none.result.distortion, uncut_distortion(mesh), 1e-3);
 }
 
-CUT_TEST_MAIN()

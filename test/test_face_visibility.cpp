@@ -29,9 +29,9 @@ Soup sphere_with_inner_triangle()
   Soup s = sphere_soup(4);
   s.cut.clear();
   const std::size_t base = s.points.size();
-  s.points.push_back(Point_3(-0.1, -0.1, 0.));
-  s.points.push_back(Point_3(0.1, -0.1, 0.));
-  s.points.push_back(Point_3(0., 0.1, 0.));
+  s.add_point(-0.1, -0.1, 0.);
+  s.add_point(0.1, -0.1, 0.);
+  s.add_point(0., 0.1, 0.);
   s.faces.push_back({base, base + 1, base + 2});
   return s;
 }
@@ -61,8 +61,10 @@ TYPED_TEST_SUITE(Face_visibility, Mesh_types);
 TYPED_TEST(Face_visibility, lone_triangle_sees_everything)
 {
   Soup s;
-  s.points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)};
-  s.faces = {{0, 1, 2}};
+  s.add_point(0, 0, 0);
+  s.add_point(1, 0, 0);
+  s.add_point(0, 1, 0);
+  s.add_triangle(0, 1, 2);
   TypeParam mesh;
   build_mesh(s, mesh);
   for(int rays : {1, 16, 64}) EXPECT_EQ(visibility_of(mesh, rays), std::vector<double>{1.});

@@ -42,13 +42,13 @@ std::pair<double, double> unwrap_both_ways(const Soup& soup)
   free_run.run(P::global_injectivity(false));
   check_cut_result(mesh, free_run);
   // the shape does overlap when nothing prevents it
-  REQUIRE_MSG(free_run.result.border_crossings > 0, "the test shape does not overlap without the scaffold");
+  CUT_ASSERT_TRUE(free_run.result.border_crossings > 0) << "the test shape does not overlap without the scaffold";
 
   Cut_run<Mesh> run(mesh);
   run.run();
   check_cut_result(mesh, run); // no crossing, UVs in [0,1], coverage = UV area
-  CHECK_EQ(run.result.border_crossings, std::size_t(0));
-  CHECK(run.result.uv_coverage > 0.1);
+  EXPECT_EQ(run.result.border_crossings, std::size_t(0));
+  EXPECT_TRUE(run.result.uv_coverage > 0.1);
   return {free_run.result.distortion, run.result.distortion};
 }
 
@@ -65,9 +65,9 @@ void make_disk_chart(const Soup& soup, Disk_chart& chart)
 {
   Surface_mesh mesh;
   build_mesh(soup, mesh);
-  REQUIRE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
   ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh, chart.corner_uv);
-  REQUIRE(ic::disk_charts_embedding(chart.mesh, chart.x) == ic::Embedding_status::OK);
+  ASSERT_TRUE(ic::disk_charts_embedding(chart.mesh, chart.x) == ic::Embedding_status::OK);
 }
 
 /// Central differences of term.value along random directions against the gradient.
@@ -87,38 +87,43 @@ void check_gradient(ic::Energy_term& term, const ic::UV_vector& x, std::uint64_t
     const double h = 1e-5 * (std::min)(1., 0.5 * term.max_step(x, d));
     const double numeric = (term.value(x + h * d) - term.value(x - h * d)) / (2. * h);
     const double analytic = gradient.dot(d);
-    CHECK_MSG(std::abs(numeric - analytic) <= 1e-4 * std::abs(analytic) + 1e-12,
-              "directional derivative " << analytic << " vs finite differences " << numeric);
+    EXPECT_TRUE(std::abs(numeric - analytic) <= 1e-4 * std::abs(analytic) + 1e-12) << "directional derivative " << analytic << " vs finite differences " << numeric;
   }
 }
 
 } // namespace
 
-CUT_TYPED_TEST(overlapping_shapes_come_out_injective, Mesh_types)
+template <typename Mesh>
+class InjectivityTyped : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE(InjectivityTyped, Mesh_types);
+
+TYPED_TEST(InjectivityTyped, overlapping_shapes_come_out_injective)
 {
   for(const auto& shape : overlapping_shapes())
   {
-    Scoped_context ctx(shape.first);
-    const auto distortion = unwrap_both_ways<TestType>(shape.second);
-    CHECK(std::isfinite(distortion.second) && distortion.second >= 4.);
+    SCOPED_TRACE(shape.first);
+    const auto distortion = unwrap_both_ways<TypeParam>(shape.second);
+    EXPECT_TRUE(std::isfinite(distortion.second) && distortion.second >= 4.);
   }
 }
 
-CUT_TEST(world_units_keep_the_scale_and_stay_injective)
+TEST(Injectivity, world_units_keep_the_scale_and_stay_injective)
 {
   Surface_mesh mesh;
   build_mesh(spiral_ramp_soup(72, 4), mesh);
   Cut_run<Surface_mesh> run(mesh);
   run.run(P::world_units(true));
   check_cut_result(mesh, run);
-  CHECK_EQ(run.result.uv_scale, 1.);
+  EXPECT_EQ(run.result.uv_scale, 1.);
   // the ramp is about 2π · 1.5 long: in world units its UVs span more than 1
   double extent = 0.;
   for(auto h : halfedges(mesh)) extent = (std::max)({extent, std::abs(run.uv(h).x()), std::abs(run.uv(h).y())});
-  CHECK(extent > 1.);
+  EXPECT_TRUE(extent > 1.);
 }
 
-CUT_TEST(no_change_where_nothing_overlaps)
+TEST(Injectivity, no_change_where_nothing_overlaps)
 {
   // a disk whose map does not overlap: the same UVs with or without the scaffold
   Surface_mesh mesh;
@@ -128,37 +133,37 @@ CUT_TEST(no_change_where_nothing_overlaps)
   run.run();
   check_cut_result(mesh, free_run);
   check_cut_result(mesh, run);
-  REQUIRE_EQ(free_run.result.border_crossings, std::size_t(0));
-  CHECK_EQ(run.result.distortion, free_run.result.distortion);
-  CHECK_EQ(run.result.newton_iterations, free_run.result.newton_iterations);
+  ASSERT_EQ(free_run.result.border_crossings, std::size_t(0));
+  EXPECT_EQ(run.result.distortion, free_run.result.distortion);
+  EXPECT_EQ(run.result.newton_iterations, free_run.result.newton_iterations);
   std::size_t different = 0;
   for(auto h : halfedges(mesh)) different += run.uv(h) != free_run.uv(h);
-  CHECK_EQ(different, std::size_t(0));
+  EXPECT_EQ(different, std::size_t(0));
 }
 
-CUT_TEST(padding_and_texture_size_are_honoured)
+TEST(Injectivity, padding_and_texture_size_are_honoured)
 {
   // two disjoint disks: their UVs are at least padding / texture_size apart
   Surface_mesh mesh;
   build_mesh(two_components_soup(6), mesh);
   for(const double padding : {0., 4., 32.})
   {
-    Scoped_context ctx("padding " + std::to_string(padding));
+    SCOPED_TRACE("padding " + std::to_string(padding));
     Cut_run<Surface_mesh> run(mesh);
     run.run(P::padding(padding, P::texture_size(256)));
     const auto report = check_cut_result(mesh, run);
-    REQUIRE_EQ(report.box.size(), std::size_t(2));
+    ASSERT_EQ(report.box.size(), std::size_t(2));
     const auto& a = report.box[0];
     const auto& b = report.box[1];
     const double gap = (std::max)({b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3]});
-    CHECK_MSG(gap >= padding / 256. * (1. - 1e-9), "gap " << gap << " below the padding");
+    EXPECT_TRUE(gap >= padding / 256. * (1. - 1e-9)) << "gap " << gap << " below the padding";
     for(const auto& box : report.box)
-      CHECK(box[0] >= padding / 256. - 1e-12 && box[1] >= padding / 256. - 1e-12 &&
+      EXPECT_TRUE(box[0] >= padding / 256. - 1e-12 && box[1] >= padding / 256. - 1e-12 &&
             box[2] <= 1. - padding / 256. + 1e-12 && box[3] <= 1. - padding / 256. + 1e-12);
   }
 }
 
-CUT_TEST(bounding_box_term_fills_the_square)
+TEST(Injectivity, bounding_box_term_fills_the_square)
 {
   // a flat 4:1 rectangle: packed as it is (on the square's diagonal) it covers
   // 4 / (5 / sqrt(2))² = 0.32 of the square at most; the gentle square box
@@ -174,33 +179,30 @@ CUT_TEST(bounding_box_term_fills_the_square)
   boxed.run(P::bounding_box_aspect_ratio(1.));
   stiff.run(P::bounding_box_aspect_ratio(1., P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness)));
   for(const auto* run : {&plain, &gentle, &boxed, &stiff}) check_cut_result(mesh, *run);
-  CHECK(plain.result.uv_coverage < 0.321);
-  CHECK_MSG(gentle.result.uv_coverage > plain.result.uv_coverage + 0.01,
-            "coverage " << plain.result.uv_coverage << " -> " << gentle.result.uv_coverage);
-  CHECK_MSG(boxed.result.uv_coverage > gentle.result.uv_coverage + 0.2,
-            "coverage " << gentle.result.uv_coverage << " -> " << boxed.result.uv_coverage);
+  EXPECT_TRUE(plain.result.uv_coverage < 0.321);
+  EXPECT_TRUE(gentle.result.uv_coverage > plain.result.uv_coverage + 0.01) << "coverage " << plain.result.uv_coverage << " -> " << gentle.result.uv_coverage;
+  EXPECT_TRUE(boxed.result.uv_coverage > gentle.result.uv_coverage + 0.2) << "coverage " << gentle.result.uv_coverage << " -> " << boxed.result.uv_coverage;
   // the price of the box
-  CHECK(plain.result.distortion < gentle.result.distortion);
-  CHECK(gentle.result.distortion < boxed.result.distortion);
+  EXPECT_TRUE(plain.result.distortion < gentle.result.distortion);
+  EXPECT_TRUE(gentle.result.distortion < boxed.result.distortion);
   // an explicit stiffness wins over the tight default of an explicit ratio:
   // the gentle square again, the same map
-  CHECK_EQ(stiff.result.uv_coverage, gentle.result.uv_coverage);
-  CHECK_EQ(stiff.result.distortion, gentle.result.distortion);
+  EXPECT_EQ(stiff.result.uv_coverage, gentle.result.uv_coverage);
+  EXPECT_EQ(stiff.result.distortion, gentle.result.distortion);
   // ratio 0 turns the box off, as stiffness 0 does
   Cut_run<Surface_mesh> off(mesh);
   off.run(P::bounding_box_aspect_ratio(0.));
-  CHECK_EQ(off.result.distortion, plain.result.distortion);
+  EXPECT_EQ(off.result.distortion, plain.result.distortion);
   // wrong values are refused
   Cut_run<Surface_mesh> bad(mesh);
-  CHECK_EQ(bad.run(P::bounding_box_aspect_ratio(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
-  CHECK_EQ(bad.run(P::bounding_box_stiffness(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
-  CHECK_EQ(bad.run(P::bounding_box_stiffness(std::numeric_limits<double>::infinity())).error,
-           SMP::ERROR_WRONG_PARAMETER);
-  CHECK_EQ(bad.run(P::padding(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
-  CHECK_EQ(bad.run(P::texture_size(0)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::bounding_box_aspect_ratio(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::bounding_box_stiffness(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::bounding_box_stiffness(std::numeric_limits<double>::infinity())).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::padding(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::texture_size(0)).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
-CUT_TEST(bounding_box_stays_within_its_distortion_budget)
+TEST(Injectivity, bounding_box_stays_within_its_distortion_budget)
 {
   // the flat 4:1 rectangle again: without box it maps isometrically; the
   // gentle square box costs it more than 0.01 of E_d, so a budget of 0.01
@@ -212,32 +214,30 @@ CUT_TEST(bounding_box_stays_within_its_distortion_budget)
   capped.run(P::bounding_box_distortion_budget(0.01));
   free_box.run(P::bounding_box_distortion_budget(std::numeric_limits<double>::infinity()));
   for(const auto* run : {&plain, &capped, &free_box}) check_cut_result(mesh, *run);
-  CHECK_MSG(free_box.result.distortion > plain.result.distortion + 0.01,
-            "E_d " << plain.result.distortion << " -> " << free_box.result.distortion);
-  CHECK_MSG(capped.result.distortion <= plain.result.distortion + 0.01 + 1e-6,
-            "E_d " << plain.result.distortion << " -> " << capped.result.distortion);
-  CHECK(capped.result.distortion < free_box.result.distortion);
+  EXPECT_TRUE(free_box.result.distortion > plain.result.distortion + 0.01) << "E_d " << plain.result.distortion << " -> " << free_box.result.distortion;
+  EXPECT_TRUE(capped.result.distortion <= plain.result.distortion + 0.01 + 1e-6) << "E_d " << plain.result.distortion << " -> " << capped.result.distortion;
+  EXPECT_TRUE(capped.result.distortion < free_box.result.distortion);
   // the default budget holds too (here the box is dropped)
   Cut_run<Surface_mesh> gentle(mesh);
   gentle.run();
   check_cut_result(mesh, gentle);
-  CHECK(gentle.result.distortion <= plain.result.distortion + SMP::gentle_bounding_box_distortion_budget + 1e-6);
+  EXPECT_TRUE(gentle.result.distortion <= plain.result.distortion + SMP::gentle_bounding_box_distortion_budget + 1e-6);
   // an explicit stiffness lifts the budget: the box is kept as asked
   Cut_run<Surface_mesh> asked(mesh);
   asked.run(P::bounding_box_stiffness(SMP::gentle_bounding_box_stiffness));
-  CHECK_EQ(asked.result.distortion, free_box.result.distortion);
+  EXPECT_EQ(asked.result.distortion, free_box.result.distortion);
   Cut_run<Surface_mesh> bad(mesh);
-  CHECK_EQ(bad.run(P::bounding_box_distortion_budget(-0.1)).error, SMP::ERROR_WRONG_PARAMETER);
-  CHECK_EQ(bad.run(P::bounding_box_distortion_budget(std::nan(""))).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::bounding_box_distortion_budget(-0.1)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(bad.run(P::bounding_box_distortion_budget(std::nan(""))).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
-CUT_TEST(scaffold_gradient_matches_finite_differences)
+TEST(Injectivity, scaffold_gradient_matches_finite_differences)
 {
   Disk_chart chart;
   make_disk_chart(wavy_disk_soup(6, 18, 2), chart);
   ic::Scaffold_term scaffold(chart.mesh);
-  REQUIRE(scaffold.update(chart.x) == ic::Energy_term::Update::ELEMENTS);
-  REQUIRE(scaffold.number_of_triangles() > 0);
+  ASSERT_TRUE(scaffold.update(chart.x) == ic::Energy_term::Update::ELEMENTS);
+  ASSERT_TRUE(scaffold.number_of_triangles() > 0);
   // at the rebuild the scaffold is at rest: no energy, no gradient
   check_gradient(scaffold, chart.x, 1);
   // away from rest
@@ -245,32 +245,32 @@ CUT_TEST(scaffold_gradient_matches_finite_differences)
   std::uniform_real_distribution<double> jitter(-0.01, 0.01);
   ic::UV_vector y = chart.x;
   for(Eigen::Index i = 0; i < y.size(); ++i) y[i] += jitter(rng);
-  REQUIRE(std::isfinite(scaffold.value(y)));
+  ASSERT_TRUE(std::isfinite(scaffold.value(y)));
   check_gradient(scaffold, y, 2);
 }
 
-CUT_TEST(scaffold_stops_a_border_before_it_crosses_another)
+TEST(Injectivity, scaffold_stops_a_border_before_it_crosses_another)
 {
   Disk_chart chart;
   make_disk_chart(flat_disk_soup(4, 16), chart);
   ic::Scaffold_term scaffold(chart.mesh);
   scaffold.update(chart.x);
-  CHECK(!scaffold.has_crossing(chart.x));
+  EXPECT_TRUE(!scaffold.has_crossing(chart.x));
   // push one border vertex straight across the disk: the step is cut before
   // it leaves the free space, and the full step is not admissible
   const auto segments = ic::border_segments(chart.mesh);
   const int v = segments.front()[0];
   ic::UV_vector step = ic::UV_vector::Zero(chart.x.size());
   step.segment<2>(2 * v) = -3. * chart.x.segment<2>(2 * v);
-  CHECK(scaffold.max_step(chart.x, step) < 1.);
+  EXPECT_TRUE(scaffold.max_step(chart.x, step) < 1.);
   // a map whose border crosses itself has no finite energy
   ic::UV_vector crossed = chart.x;
   crossed.segment<2>(2 * v) *= -1.5;
-  CHECK(scaffold.has_crossing(crossed));
-  CHECK(std::isinf(scaffold.value(crossed)));
+  EXPECT_TRUE(scaffold.has_crossing(crossed));
+  EXPECT_TRUE(std::isinf(scaffold.value(crossed)));
 }
 
-CUT_TEST(bounding_box_gradient_matches_finite_differences)
+TEST(Injectivity, bounding_box_gradient_matches_finite_differences)
 {
   Disk_chart chart;
   make_disk_chart(flat_disk_soup(5, 20), chart);
@@ -279,7 +279,7 @@ CUT_TEST(bounding_box_gradient_matches_finite_differences)
   for(Eigen::Index i = 0; i < x.size(); i += 2) x[i] *= 1.7;
   ic::Bounding_box_term box(chart.mesh, 2.);
   box.update(x);
-  CHECK(box.value(x) > 0.);
+  EXPECT_TRUE(box.value(x) > 0.);
   check_gradient(box, x, 3);
   // inside the box (the disk shrunk about its center) there is nothing to pay
   ic::UV_vector center = ic::UV_vector::Zero(2);
@@ -287,7 +287,6 @@ CUT_TEST(bounding_box_gradient_matches_finite_differences)
   center /= double(x.size() / 2);
   ic::UV_vector small = x;
   for(Eigen::Index i = 0; i < x.size(); i += 2) small.segment<2>(i) = center + 0.1 * (x.segment<2>(i) - center);
-  CHECK_EQ(box.value(small), 0.);
+  EXPECT_EQ(box.value(small), 0.);
 }
 
-CUT_TEST_MAIN()

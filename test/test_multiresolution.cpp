@@ -29,50 +29,54 @@ Soup test_torus() { return torus_soup(72, 32); }
 // A closed genus-1 mesh goes through the copy: the result is a valid atlas
 // (seams where the copy cut, a disk per chart, no flip, no crossing) whose
 // E_d and E_s are close to the full-resolution run's.
-CUT_TYPED_TEST(coarse_cuts_give_a_valid_atlas_close_to_full_resolution, Mesh_types)
+template <typename Mesh>
+class MultiresolutionTyped : public ::testing::Test
 {
-  TestType mesh;
+};
+TYPED_TEST_SUITE(MultiresolutionTyped, Mesh_types);
+
+TYPED_TEST(MultiresolutionTyped, coarse_cuts_give_a_valid_atlas_close_to_full_resolution)
+{
+  TypeParam mesh;
   build_mesh(test_torus(), mesh);
-  REQUIRE(num_faces(mesh) > std::size_t(2 * coarse_faces));
+  ASSERT_TRUE(num_faces(mesh) > std::size_t(2 * coarse_faces));
 
-  Cut_run<TestType> coarse(mesh);
+  Cut_run<TypeParam> coarse(mesh);
   coarse.run(SMP::parameters::multiresolution_faces(coarse_faces));
-  const Chart_report<TestType> report = check_cut_result(mesh, coarse);
-  REQUIRE(report.valid);
-  CHECK(coarse.result.number_of_seam_edges > 0);
-  CHECK_EQ(coarse.result.border_crossings, std::size_t(0));
+  const Chart_report<TypeParam> report = check_cut_result(mesh, coarse);
+  ASSERT_TRUE(report.valid);
+  EXPECT_TRUE(coarse.result.number_of_seam_edges > 0);
+  EXPECT_EQ(coarse.result.border_crossings, std::size_t(0));
 
-  Cut_run<TestType> full(mesh);
+  Cut_run<TypeParam> full(mesh);
   full.run(SMP::parameters::multiresolution_faces(0));
-  REQUIRE(check_cut_result(mesh, full).valid);
+  ASSERT_TRUE(check_cut_result(mesh, full).valid);
   std::cout << std::setprecision(5) << "    full resolution: E_d " << full.result.distortion << ", E_s " << full.result.seam_length
             << ", " << full.result.newton_iterations << " Newton iterations; coarse copy: E_d "
             << coarse.result.distortion << ", E_s " << coarse.result.seam_length << ", "
             << coarse.result.newton_iterations << std::endl;
-  CHECK_MSG(coarse.result.distortion < full.result.distortion + 0.1,
-            "E_d " << coarse.result.distortion << " vs " << full.result.distortion);
-  CHECK_MSG(coarse.result.seam_length < 1.3 * full.result.seam_length,
-            "E_s " << coarse.result.seam_length << " vs " << full.result.seam_length);
+  EXPECT_TRUE(coarse.result.distortion < full.result.distortion + 0.1) << "E_d " << coarse.result.distortion << " vs " << full.result.distortion;
+  EXPECT_TRUE(coarse.result.seam_length < 1.3 * full.result.seam_length) << "E_s " << coarse.result.seam_length << " vs " << full.result.seam_length;
   // the seams are not those of the full-resolution run: the copy decided them
-  CHECK(coarse.seam_vector() != full.seam_vector());
+  EXPECT_TRUE(coarse.seam_vector() != full.seam_vector());
 }
 
 // The field v of the copy is carried to the input's faces: in (0, 1], and
 // lower along the seams (where the copy's v fell and it cut) than elsewhere.
-CUT_TEST(discontinuity_field_is_carried_to_the_input)
+TEST(Multiresolution, discontinuity_field_is_carried_to_the_input)
 {
   using Mesh = Surface_mesh;
   const Mesh mesh = make_mesh<Mesh>(test_torus());
   std::unordered_map<Mesh::Face_index, double> v_storage;
   Cut_run<Mesh> run(mesh);
-  REQUIRE(run.run(SMP::parameters::multiresolution_faces(coarse_faces,
+  ASSERT_TRUE(run.run(SMP::parameters::multiresolution_faces(coarse_faces,
                     SMP::parameters::face_discontinuity_map(boost::make_assoc_property_map(v_storage)))).ok());
-  REQUIRE_EQ(v_storage.size(), num_faces(mesh));
+  ASSERT_EQ(v_storage.size(), num_faces(mesh));
   double sum = 0., along_seams = 0.;
   std::size_t seam_sides = 0;
   for(const auto& fv : v_storage)
   {
-    CHECK(fv.second > 0. && fv.second <= 1.);
+    EXPECT_TRUE(fv.second > 0. && fv.second <= 1.);
     sum += fv.second;
   }
   for(auto e : edges(mesh))
@@ -82,46 +86,46 @@ CUT_TEST(discontinuity_field_is_carried_to_the_input)
         along_seams += v_storage.at(face(h, mesh));
         ++seam_sides;
       }
-  REQUIRE(seam_sides > 0);
+  ASSERT_TRUE(seam_sides > 0);
   const double mean = sum / double(v_storage.size()), mean_along_seams = along_seams / double(seam_sides);
-  CHECK_MSG(mean_along_seams < mean - 1e-3, "mean v " << mean << ", along the seams " << mean_along_seams);
+  EXPECT_TRUE(mean_along_seams < mean - 1e-3) << "mean v " << mean << ", along the seams " << mean_along_seams;
 }
 
 // Below twice the copy's size, nothing changes: the result is the
 // full-resolution run's, bit for bit.
-CUT_TEST(small_meshes_are_not_simplified)
+TEST(Multiresolution, small_meshes_are_not_simplified)
 {
   using Mesh = Surface_mesh;
   const Mesh mesh = make_mesh<Mesh>(test_torus());
   Cut_run<Mesh> a(mesh), b(mesh);
-  REQUIRE(a.run(SMP::parameters::multiresolution_faces(int(num_faces(mesh)) / 2)).ok());
-  REQUIRE(b.run(SMP::parameters::multiresolution_faces(0)).ok());
-  CHECK(a.seam_vector() == b.seam_vector());
-  CHECK(a.result.distortion == b.result.distortion);
+  ASSERT_TRUE(a.run(SMP::parameters::multiresolution_faces(int(num_faces(mesh)) / 2)).ok());
+  ASSERT_TRUE(b.run(SMP::parameters::multiresolution_faces(0)).ok());
+  EXPECT_TRUE(a.seam_vector() == b.seam_vector());
+  EXPECT_TRUE(a.result.distortion == b.result.distortion);
 }
 
 // Seams given by the user stay seams: the copy keeps them as edges (they
 // constrain its simplification) and the full-resolution cut contains them.
-CUT_TYPED_TEST(user_seams_are_kept_through_the_copy, Mesh_types)
+TYPED_TEST(MultiresolutionTyped, user_seams_are_kept_through_the_copy)
 {
   const Soup soup = test_torus();
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   // the meridian of the torus' cut (soup.cut: the longitude's 72 edges, then the meridian's 32)
   const std::vector<std::pair<std::size_t, std::size_t>> meridian(soup.cut.begin() + 72, soup.cut.end());
-  REQUIRE_EQ(meridian.size(), std::size_t(32));
+  ASSERT_EQ(meridian.size(), std::size_t(32));
   const auto given = soup_edges(mesh, vertex_of, meridian);
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   for(auto e : given) run.seam_storage[e] = true;
   run.run(SMP::parameters::multiresolution_faces(coarse_faces));
-  REQUIRE(check_cut_result(mesh, run).valid);
-  for(auto e : given) CHECK(run.is_seam(e));
+  ASSERT_TRUE(check_cut_result(mesh, run).valid);
+  for(auto e : given) EXPECT_TRUE(run.is_seam(e));
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 // The simplification is sequential and the rest is deterministic: the same
 // seams and UVs for any number of threads.
-CUT_TEST(coarse_copy_is_deterministic_across_thread_counts)
+TEST(Multiresolution, coarse_copy_is_deterministic_across_thread_counts)
 {
   using Mesh = Surface_mesh;
   const Mesh mesh = make_mesh<Mesh>(test_torus());
@@ -131,25 +135,24 @@ CUT_TEST(coarse_copy_is_deterministic_across_thread_counts)
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     Cut_run<Mesh> run(mesh);
-    REQUIRE(run.run(SMP::parameters::multiresolution_faces(coarse_faces)).ok());
+    ASSERT_TRUE(run.run(SMP::parameters::multiresolution_faces(coarse_faces)).ok());
     uvs.push_back(run.uv_vector());
     seams.push_back(run.seam_vector());
   }
-  CHECK(seams[1] == seams[0]);
-  REQUIRE_EQ(uvs[1].size(), uvs[0].size());
+  EXPECT_TRUE(seams[1] == seams[0]);
+  ASSERT_EQ(uvs[1].size(), uvs[0].size());
   std::size_t differ = 0;
   for(std::size_t k = 0; k < uvs[0].size(); ++k)
     if(std::memcmp(&uvs[1][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
-  CHECK_EQ(differ, std::size_t(0));
+  EXPECT_EQ(differ, std::size_t(0));
 }
 #endif
 
-CUT_TEST(negative_size_is_a_wrong_parameter)
+TEST(Multiresolution, negative_size_is_a_wrong_parameter)
 {
   using Mesh = Surface_mesh;
   const Mesh mesh = make_mesh<Mesh>(test_torus());
   Cut_run<Mesh> run(mesh);
-  CHECK_EQ(run.run(SMP::parameters::multiresolution_faces(-1)).error, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(run.run(SMP::parameters::multiresolution_faces(-1)).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
-CUT_TEST_MAIN()

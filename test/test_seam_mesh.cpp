@@ -50,31 +50,31 @@ void seam_round_trip(const Mesh& mesh, const std::vector<edge_descriptor_t<Mesh>
     on_seam.insert(source(e, mesh));
     on_seam.insert(target(e, mesh));
   }
-  for(vertex_descriptor v : vertices(mesh)) CHECK_EQ(bool(get(svm, v)), on_seam.count(v) == 1);
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(bool(get(svm, v)), on_seam.count(v) == 1);
 
   // the seam counter was set: edges and halfedges of the cut mesh
-  CHECK_EQ(num_edges(seam_mesh), num_edges(mesh) + seams.size());
-  CHECK_EQ(num_faces(seam_mesh), num_faces(mesh));
+  EXPECT_EQ(num_edges(seam_mesh), num_edges(mesh) + seams.size());
+  EXPECT_EQ(num_faces(seam_mesh), num_faces(mesh));
   std::size_t border_halfedges = 0;
   for(auto h : halfedges(seam_mesh))
     if(is_border(h, seam_mesh)) ++border_halfedges;
-  CHECK_EQ(border_halfedges, 2 * seams.size());
+  EXPECT_EQ(border_halfedges, 2 * seams.size());
   const long chi = long(num_vertices(seam_mesh)) - long(num_edges(seam_mesh)) + long(num_faces(seam_mesh));
 
   auto uvmap = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh); // keyed by halfedges of `mesh`
   const SMP::Error_code status = SMP::symmetric_dirichlet_parameterize(seam_mesh, uvmap);
   if(!expect_disk)
   {
-    CHECK(chi != 1);
-    CHECK_EQ(status, SMP::ERROR_NO_TOPOLOGICAL_DISC);
+    EXPECT_TRUE(chi != 1);
+    EXPECT_EQ(status, SMP::ERROR_NO_TOPOLOGICAL_DISC);
     return;
   }
-  CHECK_EQ(chi, 1L);
-  REQUIRE_EQ(status, SMP::OK);
-  CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
+  EXPECT_EQ(chi, 1L);
+  ASSERT_EQ(status, SMP::OK);
+  EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
   const double energy = SMP::distortion_energy(seam_mesh, uvmap);
-  CHECK(std::isfinite(energy));
-  CHECK(energy >= 4.);
+  EXPECT_TRUE(std::isfinite(energy));
+  EXPECT_TRUE(energy >= 4.);
 
   // one UV per corner of the underlying mesh, read through the seam mesh
   auto corner = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
@@ -82,11 +82,11 @@ void seam_round_trip(const Mesh& mesh, const std::vector<edge_descriptor_t<Mesh>
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
     {
       const Point_2 p = get(uvmap, target(seam_halfedge(h), seam_mesh));
-      CHECK(std::isfinite(p.x()) && std::isfinite(p.y()));
+      EXPECT_TRUE(std::isfinite(p.x()) && std::isfinite(p.y()));
       put(corner, h, p);
     }
-  CHECK_EQ(SMP::number_of_flipped_faces(mesh, corner), std::size_t(0));
-  CHECK_REL(SMP::distortion_energy(mesh, corner), energy, 1e-12);
+  EXPECT_EQ(SMP::number_of_flipped_faces(mesh, corner), std::size_t(0));
+  EXPECT_REL(SMP::distortion_energy(mesh, corner), energy, 1e-12);
 
   // corners agree around a vertex except across seams; across a seam they
   // differ (the surface was opened there)
@@ -107,86 +107,91 @@ void seam_round_trip(const Mesh& mesh, const std::vector<edge_descriptor_t<Mesh>
       std::size_t seam_degree = 0;
       for(auto g : halfedges_around_target(h, mesh))
         if(get(sem, edge(g, mesh))) ++seam_degree;
-      if(seam_degree > 1) CHECK_MSG(gap > 1e-6 * scale, "seam corners coincide, gap " << gap);
-      else CHECK_MSG(gap <= 1e-12 * scale, "corners at a seam's leaf differ, gap " << gap);
+      if(seam_degree > 1) EXPECT_TRUE(gap > 1e-6 * scale) << "seam corners coincide, gap " << gap;
+      else EXPECT_TRUE(gap <= 1e-12 * scale) << "corners at a seam's leaf differ, gap " << gap;
     }
     else // faces across an uncut edge are in the same sector around its ends
-      CHECK_MSG(gap <= 1e-12 * scale, "corners of an uncut edge differ, gap " << gap);
+      EXPECT_TRUE(gap <= 1e-12 * scale) << "corners of an uncut edge differ, gap " << gap;
   }
 
   // restarting from the result through the seam mesh keeps it flip-free and no worse
-  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(seam_mesh, uvmap, SMP::parameters::initialize_from_uv_map(true)),
-             SMP::OK);
-  CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
-  CHECK(SMP::distortion_energy(seam_mesh, uvmap) <= energy * (1. + 1e-12));
+  ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(seam_mesh, uvmap, SMP::parameters::initialize_from_uv_map(true)), SMP::OK);
+  EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
+  EXPECT_TRUE(SMP::distortion_energy(seam_mesh, uvmap) <= energy * (1. + 1e-12));
 
   // E_s counts each seam edge once
   double length = 0.;
   for(auto e : seams) length += edge_length(mesh, e);
-  CHECK_REL(SMP::seam_length(mesh, sem), length / std::sqrt(SMP::surface_area(mesh) / pi), 1e-12);
+  EXPECT_REL(SMP::seam_length(mesh, sem), length / std::sqrt(SMP::surface_area(mesh) / pi), 1e-12);
 }
 
 } // namespace
 
-CUT_TYPED_TEST(sphere_cut_along_a_path, Mesh_types)
+template <typename Mesh>
+class SeamMeshTyped : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE(SeamMeshTyped, Mesh_types);
+
+TYPED_TEST(SeamMeshTyped, sphere_cut_along_a_path)
 {
   const Soup soup = sphere_soup(4);
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   const auto seams = soup_edges(mesh, vertex_of, soup.cut);
   seam_round_trip(mesh, seams, true);
 }
 
-CUT_TYPED_TEST(sphere_cut_along_a_tree, Mesh_types)
+TYPED_TEST(SeamMeshTyped, sphere_cut_along_a_tree)
 {
   // the pole-to-pole path plus a branch from the +y pole to the path's midpoint (+x)
   const Soup soup = sphere_soup(4);
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   auto seams = soup_edges(mesh, vertex_of, soup.cut);
   const auto mid = vertex_of[soup.cut[3].second]; // (n, 0, 0)
   auto vpm = get(CGAL::vertex_point, mesh);
-  REQUIRE(get(vpm, mid).x() > 0.999);
-  typename boost::graph_traits<TestType>::vertex_descriptor y_pole = mid;
+  ASSERT_TRUE(get(vpm, mid).x() > 0.999);
+  typename boost::graph_traits<TypeParam>::vertex_descriptor y_pole = mid;
   for(auto v : vertices(mesh))
     if(get(vpm, v).y() > 0.999) y_pole = v;
-  REQUIRE(y_pole != mid);
+  ASSERT_TRUE(y_pole != mid);
   const auto branch = shortest_edge_path(mesh, y_pole, mid);
-  REQUIRE_EQ(branch.size(), std::size_t(4));
+  ASSERT_EQ(branch.size(), std::size_t(4));
   seams.insert(seams.end(), branch.begin(), branch.end());
   seam_round_trip(mesh, seams, true);
 }
 
-CUT_TYPED_TEST(torus_cut_along_meridian_and_longitude, Mesh_types)
+TYPED_TEST(SeamMeshTyped, torus_cut_along_meridian_and_longitude)
 {
   const Soup soup = torus_soup(16, 8);
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   seam_round_trip(mesh, soup_edges(mesh, vertex_of, soup.cut), true);
 }
 
-CUT_TYPED_TEST(insufficient_cuts_are_not_disks, Mesh_types)
+TYPED_TEST(SeamMeshTyped, insufficient_cuts_are_not_disks)
 {
   {
-    Scoped_context ctx("torus cut along one longitude only: an annulus");
+    SCOPED_TRACE("torus cut along one longitude only: an annulus");
     const Soup soup = torus_soup(12, 6);
-    TestType mesh;
+    TypeParam mesh;
     const auto vertex_of = build_mesh(soup, mesh);
     std::vector<std::pair<std::size_t, std::size_t>> longitude(soup.cut.begin(), soup.cut.begin() + 12);
     seam_round_trip(mesh, soup_edges(mesh, vertex_of, longitude), false);
   }
   {
-    Scoped_context ctx("sphere cut along a closed loop: two disks");
+    SCOPED_TRACE("sphere cut along a closed loop: two disks");
     const Soup soup = sphere_soup(3);
-    TestType mesh;
+    TypeParam mesh;
     build_mesh(soup, mesh);
     // the equator z = 0
-    std::vector<typename boost::graph_traits<TestType>::edge_descriptor> equator;
+    std::vector<typename boost::graph_traits<TypeParam>::edge_descriptor> equator;
     auto vpm = get(CGAL::vertex_point, mesh);
     for(auto e : edges(mesh))
       if(std::abs(get(vpm, source(e, mesh)).z()) < 1e-12 && std::abs(get(vpm, target(e, mesh)).z()) < 1e-12)
         equator.push_back(e);
-    REQUIRE_EQ(equator.size(), std::size_t(12));
+    ASSERT_EQ(equator.size(), std::size_t(12));
     // two disks: the parameterizer embeds disjoint disks side by side
     auto sem = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
     auto svm = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
@@ -195,15 +200,14 @@ CUT_TYPED_TEST(insufficient_cuts_are_not_disks, Mesh_types)
     const auto seam_mesh = SMP::make_seam_mesh(mesh, sem, svm);
     auto uvmap = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
     const SMP::Error_code status = SMP::symmetric_dirichlet_parameterize(seam_mesh, uvmap);
-    CHECK_EQ(status, SMP::OK);
-    if(status == SMP::OK) CHECK_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
+    EXPECT_EQ(status, SMP::OK);
+    if(status == SMP::OK) EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, uvmap), std::size_t(0));
   }
   {
-    Scoped_context ctx("closed sphere, no seam");
-    TestType mesh;
+    SCOPED_TRACE("closed sphere, no seam");
+    TypeParam mesh;
     build_mesh(sphere_soup(3), mesh);
     seam_round_trip(mesh, {}, false);
   }
 }
 
-CUT_TEST_MAIN()

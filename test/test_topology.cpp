@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cstdlib>
+#include <type_traits>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using namespace cut_test;
@@ -60,19 +61,18 @@ struct Expected
 template <typename Mesh>
 Chart_report<Mesh> unwrap_and_check(const Mesh& mesh, const Expected& expected)
 {
-  REQUIRE(CGAL::is_triangle_mesh(mesh));
+  CUT_ASSERT_TRUE(CGAL::is_triangle_mesh(mesh));
   const std::size_t components = number_of_face_components(mesh);
-  CHECK_EQ(components, expected.components);
-  if(expected.components == 1) CHECK_EQ(genus(mesh), expected.genus);
+  EXPECT_EQ(components, expected.components);
+  if(expected.components == 1) EXPECT_EQ(genus(mesh), expected.genus);
 
   Cut_run<Mesh> run(mesh);
   run.run();
   const Chart_report<Mesh> report = check_cut_result(mesh, run);
   // at least one chart per component; a component that is not a disk needs seams
-  CHECK(report.number_of_charts >= components);
-  if(expected.genus > 0 || CGAL::is_closed(mesh)) CHECK(run.result.number_of_seam_edges > 0);
-  CHECK_MSG(run.result.distortion < expected.max_distortion,
-            "E_d " << run.result.distortion << " >= " << expected.max_distortion);
+  EXPECT_TRUE(report.number_of_charts >= components);
+  if(expected.genus > 0 || CGAL::is_closed(mesh)) EXPECT_TRUE(run.result.number_of_seam_edges > 0);
+  EXPECT_TRUE(run.result.distortion < expected.max_distortion) << "E_d " << run.result.distortion << " >= " << expected.max_distortion;
   std::cout << std::defaultfloat << std::setprecision(6) << "    " << num_faces(mesh) << " faces, " << report.number_of_charts << " charts, "
             << run.result.number_of_seam_edges << " seam edges, E_d " << run.result.distortion
             << " (initial " << run.result.initial_distortion << "), E_s " << run.result.seam_length
@@ -90,58 +90,64 @@ Chart_report<Mesh> unwrap_soup(const Soup& soup, const Expected& expected)
 
 } // namespace
 
-CUT_TYPED_TEST(closed_sphere, Mesh_types)
+template <typename Mesh>
+class TopologyTyped : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE(TopologyTyped, Mesh_types);
+
+TYPED_TEST(TopologyTyped, closed_sphere)
 {
   Expected e;
   e.genus = 0;
   e.max_distortion = 5.;
-  unwrap_soup<TestType>(sphere_soup(6), e);
+  unwrap_soup<TypeParam>(sphere_soup(6), e);
 }
 
-CUT_TYPED_TEST(closed_torus, Mesh_types)
+TYPED_TEST(TopologyTyped, closed_torus)
 {
   Expected e;
   e.genus = 1;
   e.max_distortion = 5.;
-  unwrap_soup<TestType>(torus_soup(32, 12), e);
+  unwrap_soup<TypeParam>(torus_soup(32, 12), e);
 }
 
-CUT_TYPED_TEST(double_torus, Mesh_types)
+TYPED_TEST(TopologyTyped, double_torus)
 {
   const Soup soup = double_torus_soup(8, 0.1);
   {
     // the generator: closed, genus 2
-    TestType mesh;
+    TypeParam mesh;
     build_mesh(soup, mesh);
-    CHECK(CGAL::is_closed(mesh));
-    CHECK_EQ(number_of_border_cycles(mesh), std::size_t(0));
-    CHECK_EQ(euler_characteristic(mesh), -2L);
+    EXPECT_TRUE(CGAL::is_closed(mesh));
+    EXPECT_EQ(number_of_border_cycles(mesh), std::size_t(0));
+    EXPECT_EQ(euler_characteristic(mesh), -2L);
   }
   Expected e;
   e.genus = 2;
-  unwrap_soup<TestType>(soup, e);
+  unwrap_soup<TypeParam>(soup, e);
 }
 
-CUT_TYPED_TEST(disk_with_three_holes, Mesh_types)
+TYPED_TEST(TopologyTyped, disk_with_three_holes)
 {
   const Soup soup = disk_with_holes_soup(12, 3);
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
-  REQUIRE_EQ(number_of_border_cycles(mesh), std::size_t(4));
+  ASSERT_EQ(number_of_border_cycles(mesh), std::size_t(4));
   Expected e;
   e.genus = 0;
   unwrap_and_check(mesh, e);
 }
 
-CUT_TYPED_TEST(two_disjoint_disks, Mesh_types)
+TYPED_TEST(TopologyTyped, two_disjoint_disks)
 {
   Expected e;
   e.components = 2;
-  const auto report = unwrap_soup<TestType>(two_components_soup(8), e);
-  CHECK(report.number_of_charts >= 2);
+  const auto report = unwrap_soup<TypeParam>(two_components_soup(8), e);
+  EXPECT_TRUE(report.number_of_charts >= 2);
 }
 
-CUT_TYPED_TEST(closed_sphere_next_to_a_disk, Mesh_types)
+TYPED_TEST(TopologyTyped, closed_sphere_next_to_a_disk)
 {
   Soup soup = sphere_soup(4);
   Soup disk = hemisphere_soup(6, 16);
@@ -149,28 +155,28 @@ CUT_TYPED_TEST(closed_sphere_next_to_a_disk, Mesh_types)
   soup.append(disk);
   Expected e;
   e.components = 2;
-  unwrap_soup<TestType>(soup, e);
+  unwrap_soup<TypeParam>(soup, e);
 }
 
-CUT_TYPED_TEST(torus_with_user_seams_that_split_it, Mesh_types)
+TYPED_TEST(TopologyTyped, torus_with_user_seams_that_split_it)
 {
   // user seams along two meridians cut the torus into two annuli: the
   // result must still be disks (the method adds what is missing)
   const int nu = 24, nv = 10;
   const Soup soup = torus_soup(nu, nv);
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   std::vector<std::pair<std::size_t, std::size_t>> meridians;
   for(int i : {0, nu / 2})
     for(int j = 0; j < nv; ++j)
       meridians.emplace_back(std::size_t(i * nv + j), std::size_t(i * nv + (j + 1) % nv));
   const auto user = soup_edges(mesh, vertex_of, meridians);
-  Cut_run<TestType> run(mesh);
+  Cut_run<TypeParam> run(mesh);
   for(auto ed : user) run.seam_storage[ed] = true;
   run.run();
   const auto report = check_cut_result(mesh, run);
-  CHECK(report.number_of_charts >= 2);
-  for(auto ed : user) CHECK(run.is_seam(ed));
+  EXPECT_TRUE(report.number_of_charts >= 2);
+  for(auto ed : user) EXPECT_TRUE(run.is_seam(ed));
 }
 
 // --- CGAL's data set ---------------------------------------------------------
@@ -180,66 +186,81 @@ namespace {
 template <typename Mesh>
 void data_mesh_case(const std::string& name, const Expected& expected)
 {
-  Scoped_context ctx(name);
+  SCOPED_TRACE(name);
   Mesh mesh;
   const std::string path = CGAL::data_file_path("meshes/" + name);
-  REQUIRE_MSG(CGAL::IO::read_polygon_mesh(path, mesh), "cannot read " << path);
-  REQUIRE(num_faces(mesh) > 0);
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, mesh)) << "cannot read " << path;
+  ASSERT_TRUE(num_faces(mesh) > 0);
   unwrap_and_check(mesh, expected);
 }
 
+// CGAL's data set, when CGAL_DATA_DIR points to it (skipped otherwise).
+// Debug builds (the sanitizer run) check these meshes with Surface_mesh
+// only: the second mesh type doubles the time (elephant alone: 46 s) for a
+// path that the generated cases above already cover with both types.
 template <typename Mesh>
-void register_data_cases()
+bool data_cases_wanted()
 {
-  const std::string type = Type_name<Mesh>::get();
-  register_test("cgal_data_elephant<" + type + ">", [] {
-    Expected e;
-    e.genus = 3; // closed
-    data_mesh_case<Mesh>("elephant.off", e);
-  });
-  register_test("cgal_data_knot1<" + type + ">", [] {
-    Expected e;
-    e.genus = 1;
-    data_mesh_case<Mesh>("knot1.off", e);
-  });
-  register_test("cgal_data_blobby_3cc<" + type + ">", [] {
-    Expected e;
-    e.components = 3;
-    data_mesh_case<Mesh>("blobby_3cc.off", e);
-  });
-  register_test("cgal_data_holes<" + type + ">", [] {
-    Expected e;
-    e.genus = 0; // 7 holes
-    data_mesh_case<Mesh>("holes.off", e);
-  });
-  register_test("cgal_data_eight<" + type + ">", [] {
-    Expected e;
-    e.genus = 2;
-    data_mesh_case<Mesh>("eight.off", e);
-  });
-  register_test("cgal_data_pipe<" + type + ">", [] {
-    Expected e;
-    e.genus = 1; // closed
-    data_mesh_case<Mesh>("pipe.off", e);
-  });
-}
-
-const bool data_cases_registered = [] {
-  if(std::getenv("CGAL_DATA_DIR") == nullptr)
-  {
-    std::cout << "CGAL_DATA_DIR not set: the CGAL data-set cases are not run" << std::endl;
-    return false;
-  }
-  register_data_cases<Surface_mesh>();
-#ifdef NDEBUG
-  // Debug (the sanitizer run) checks these meshes once: the second mesh
-  // type doubles the time (elephant alone: 46 s) for a path that the
-  // generated cases above already cover with both types.
-  register_data_cases<Polyhedron>();
+  if(std::getenv("CGAL_DATA_DIR") == nullptr) return false;
+#ifndef NDEBUG
+  if(!std::is_same<Mesh, Surface_mesh>::value) return false;
 #endif
   return true;
-}();
+}
+
+template <typename Mesh>
+class TopologyData : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    if(!data_cases_wanted<Mesh>()) GTEST_SKIP() << "CGAL_DATA_DIR not set, or a Debug build and not Surface_mesh";
+  }
+};
+TYPED_TEST_SUITE(TopologyData, Mesh_types);
+
+TYPED_TEST(TopologyData, elephant_closed_genus_3)
+{
+  Expected e;
+  e.genus = 3;
+  data_mesh_case<TypeParam>("elephant.off", e);
+}
+
+TYPED_TEST(TopologyData, knot1_genus_1)
+{
+  Expected e;
+  e.genus = 1;
+  data_mesh_case<TypeParam>("knot1.off", e);
+}
+
+TYPED_TEST(TopologyData, blobby_3cc_three_components)
+{
+  Expected e;
+  e.components = 3;
+  data_mesh_case<TypeParam>("blobby_3cc.off", e);
+}
+
+TYPED_TEST(TopologyData, holes_genus_0_seven_holes)
+{
+  Expected e;
+  e.genus = 0;
+  data_mesh_case<TypeParam>("holes.off", e);
+}
+
+TYPED_TEST(TopologyData, eight_genus_2)
+{
+  Expected e;
+  e.genus = 2;
+  data_mesh_case<TypeParam>("eight.off", e);
+}
+
+TYPED_TEST(TopologyData, pipe_closed_genus_1)
+{
+  Expected e;
+  e.genus = 1;
+  data_mesh_case<TypeParam>("pipe.off", e);
+}
+
 
 } // namespace
 
-CUT_TEST_MAIN()

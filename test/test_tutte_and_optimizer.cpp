@@ -47,11 +47,10 @@ struct Chart
 template <typename Mesh>
 void make_chart(const Mesh& mesh, Chart<Mesh>& chart)
 {
-  REQUIRE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
   // no face of a generated disk is degenerate (none gets its rest shape clamped)
-  REQUIRE_EQ(ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh,
-                                  chart.corner_uv),
-             std::size_t(0));
+  ASSERT_EQ(ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh,
+                                  chart.corner_uv), std::size_t(0));
 }
 
 double signed_area(const ic::Chart_mesh& mesh, const ic::UV_vector& x, std::size_t f)
@@ -67,17 +66,23 @@ auto vertex_uv_map(const Mesh& mesh)
 
 } // namespace
 
-CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
+template <typename Mesh>
+class TutteAndOptimizerTyped : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE(TutteAndOptimizerTyped, Mesh_types);
+
+TYPED_TEST(TutteAndOptimizerTyped, tutte_embedding_has_no_flipped_face)
 {
   for(const Named_soup& disk : disks())
   {
-    Scoped_context ctx(disk.name);
-    TestType mesh;
+    SCOPED_TRACE(disk.name);
+    TypeParam mesh;
     build_mesh(disk.soup, mesh);
-    Chart<TestType> chart;
+    Chart<TypeParam> chart;
     make_chart(mesh, chart);
     const auto loops = ic::boundary_loops(chart.mesh);
-    REQUIRE_EQ(loops.size(), std::size_t(1));
+    ASSERT_EQ(loops.size(), std::size_t(1));
     // the loop pinned on the circle of the mesh's area, centered off the origin
     const double radius = std::sqrt(chart.mesh.total_area() / pi);
     ic::Pinned_loop pinned;
@@ -85,13 +90,13 @@ CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
     pinned.radius = radius;
     pinned.center = ic::Vector2(0.3, -2.);
     ic::UV_vector x;
-    REQUIRE(ic::tutte_embedding(chart.mesh, {pinned}, ic::Boundary_spacing::ARC_LENGTH, x));
-    REQUIRE(x.allFinite());
-    CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+    ASSERT_TRUE(ic::tutte_embedding(chart.mesh, {pinned}, ic::Boundary_spacing::ARC_LENGTH, x));
+    ASSERT_TRUE(x.allFinite());
+    EXPECT_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
     double min_area = std::numeric_limits<double>::infinity();
     for(std::size_t f = 0; f < chart.mesh.number_of_faces(); ++f)
       min_area = (std::min)(min_area, signed_area(chart.mesh, x, f));
-    CHECK(min_area > 0.);
+    EXPECT_TRUE(min_area > 0.);
 
     // the border sits on the circle, counterclockwise
     const auto& loop = loops.front();
@@ -99,14 +104,14 @@ CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
     for(std::size_t i = 0; i < loop.size(); ++i)
     {
       const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      CHECK_NEAR(std::hypot(x[2 * a] - 0.3, x[2 * a + 1] + 2.), radius, 1e-12 * radius);
+      EXPECT_NEAR(std::hypot(x[2 * a] - 0.3, x[2 * a + 1] + 2.), radius, 1e-12 * radius);
       polygon_area += 0.5 * (x[2 * a] * x[2 * b + 1] - x[2 * b] * x[2 * a + 1]);
     }
-    CHECK(polygon_area > 0.);
+    EXPECT_TRUE(polygon_area > 0.);
     // flip-free and a disk: the faces tile the border polygon exactly
     double uv_area = 0.;
     for(std::size_t f = 0; f < chart.mesh.number_of_faces(); ++f) uv_area += signed_area(chart.mesh, x, f);
-    CHECK_REL(uv_area, polygon_area, 1e-12);
+    EXPECT_REL(uv_area, polygon_area, 1e-12);
 
     // uniform Tutte: every interior vertex is the mean of its neighbors
     std::map<int, std::set<int>> neighbors;
@@ -130,29 +135,29 @@ CUT_TYPED_TEST(tutte_embedding_has_no_flipped_face, Mesh_types)
       }
       mx /= double(entry.second.size());
       my /= double(entry.second.size());
-      CHECK_NEAR(x[2 * entry.first], mx, 1e-10 * radius);
-      CHECK_NEAR(x[2 * entry.first + 1], my, 1e-10 * radius);
+      EXPECT_NEAR(x[2 * entry.first], mx, 1e-10 * radius);
+      EXPECT_NEAR(x[2 * entry.first + 1], my, 1e-10 * radius);
     }
-    CHECK(interior > 0);
+    EXPECT_TRUE(interior > 0);
   }
 }
 
-CUT_TYPED_TEST(disk_charts_embedding_separates_components, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, disk_charts_embedding_separates_components)
 {
   // three disks of different sizes: each on its own circle, no flip, no overlap
   Soup soup = grid_soup(4, 4, 1., 1.);
   soup.append(hemisphere_soup(4, 12, 2.).translate(5., 0., 0.));
   soup.append(wavy_disk_soup(4, 12, 2).scale(0.5).translate(-5., 0., 0.));
-  TestType mesh;
+  TypeParam mesh;
   build_mesh(soup, mesh);
-  Chart<TestType> chart;
+  Chart<TypeParam> chart;
   make_chart(mesh, chart);
   int number_of_charts = 0;
   const std::vector<int> chart_of_face = ic::chart_of_faces(chart.mesh, number_of_charts);
-  REQUIRE_EQ(number_of_charts, 3);
+  ASSERT_EQ(number_of_charts, 3);
   ic::UV_vector x;
-  REQUIRE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
-  CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+  ASSERT_TRUE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
+  EXPECT_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
   // UV bounding boxes of the charts are disjoint, and each chart's UV area is
   // at most its 3D area (a polygon inscribed in the circle of that area)
   std::vector<std::array<double, 4>> box(3, {1e300, -1e300, 1e300, -1e300});
@@ -172,68 +177,66 @@ CUT_TYPED_TEST(disk_charts_embedding_separates_components, Mesh_types)
   }
   for(int a = 0; a < 3; ++a)
   {
-    CHECK(uv_area[a] > 0.5 * area[a]);
-    CHECK(uv_area[a] <= area[a] * (1. + 1e-12));
+    EXPECT_TRUE(uv_area[a] > 0.5 * area[a]);
+    EXPECT_TRUE(uv_area[a] <= area[a] * (1. + 1e-12));
     for(int b = a + 1; b < 3; ++b)
     {
       const bool apart = box[a][1] < box[b][0] || box[b][1] < box[a][0] || box[a][3] < box[b][2]
                          || box[b][3] < box[a][2];
-      CHECK_MSG(apart, "charts " << a << " and " << b << " overlap in UV");
+      EXPECT_TRUE(apart) << "charts " << a << " and " << b << " overlap in UV";
     }
   }
   // a chart with a hole is not a disk
-  Chart<TestType> holed;
-  TestType holed_mesh;
+  Chart<TypeParam> holed;
+  TypeParam holed_mesh;
   build_mesh(disk_with_holes_soup(5, 1), holed_mesh);
   make_chart(holed_mesh, holed);
-  CHECK(ic::disk_charts_embedding(holed.mesh, x) == ic::Embedding_status::NOT_DISKS);
+  EXPECT_TRUE(ic::disk_charts_embedding(holed.mesh, x) == ic::Embedding_status::NOT_DISKS);
 }
 
-CUT_TYPED_TEST(optimizer_lowers_the_energy_below_tutte_without_flips, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, optimizer_lowers_the_energy_below_tutte_without_flips)
 {
   for(const Named_soup& disk : disks())
   {
-    Scoped_context ctx(disk.name);
-    TestType mesh;
+    SCOPED_TRACE(disk.name);
+    TypeParam mesh;
     build_mesh(disk.soup, mesh);
     auto tutte_uv = vertex_uv_map(mesh);
     // no Newton iteration: the Tutte embedding itself
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, tutte_uv, CGAL::parameters::number_of_iterations(0)),
-               SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, tutte_uv), std::size_t(0));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, tutte_uv, CGAL::parameters::number_of_iterations(0)), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, tutte_uv), std::size_t(0));
     const double tutte_energy = SMP::distortion_energy(mesh, tutte_uv);
-    CHECK(std::isfinite(tutte_energy));
+    EXPECT_TRUE(std::isfinite(tutte_energy));
 
     auto uv = vertex_uv_map(mesh);
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
     const double energy = SMP::distortion_energy(mesh, uv);
-    CHECK(std::isfinite(energy));
-    CHECK(energy >= 4.);
-    CHECK_MSG(energy < tutte_energy, "optimized " << energy << " vs Tutte " << tutte_energy);
-    for(auto v : vertices(mesh)) CHECK(std::isfinite(get(uv, v).x()) && std::isfinite(get(uv, v).y()));
+    EXPECT_TRUE(std::isfinite(energy));
+    EXPECT_TRUE(energy >= 4.);
+    EXPECT_TRUE(energy < tutte_energy) << "optimized " << energy << " vs Tutte " << tutte_energy;
+    for(auto v : vertices(mesh)) EXPECT_TRUE(std::isfinite(get(uv, v).x()) && std::isfinite(get(uv, v).y()));
 
     // restarting from the optimum keeps it (no flip, no increase)
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)),
-               SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
-    CHECK(SMP::distortion_energy(mesh, uv) <= energy * (1. + 1e-12));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::initialize_from_uv_map(true)), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    EXPECT_TRUE(SMP::distortion_energy(mesh, uv) <= energy * (1. + 1e-12));
   }
 }
 
-CUT_TYPED_TEST(every_newton_iteration_is_flip_free_and_decreasing, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, every_newton_iteration_is_flip_free_and_decreasing)
 {
   for(const Named_soup& disk : disks())
   {
-    Scoped_context ctx(disk.name);
-    TestType mesh;
+    SCOPED_TRACE(disk.name);
+    TypeParam mesh;
     build_mesh(disk.soup, mesh);
-    Chart<TestType> chart;
+    Chart<TypeParam> chart;
     make_chart(mesh, chart);
     const auto loops = ic::boundary_loops(chart.mesh);
-    REQUIRE_EQ(loops.size(), std::size_t(1));
+    ASSERT_EQ(loops.size(), std::size_t(1));
     ic::UV_vector x;
-    REQUIRE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
+    ASSERT_TRUE(ic::disk_charts_embedding(chart.mesh, x) == ic::Embedding_status::OK);
     ic::Distortion_minimizer minimizer(chart.mesh, std::vector<double>(chart.mesh.number_of_faces(), 1.));
     double previous = ic::mean_distortion(chart.mesh, x);
     const double tutte = previous;
@@ -241,20 +244,20 @@ CUT_TYPED_TEST(every_newton_iteration_is_flip_free_and_decreasing, Mesh_types)
     for(int iteration = 0; iteration < 100 && !converged; ++iteration)
     {
       const ic::Newton_report report = minimizer.minimize(x, 1, 1e-9);
-      REQUIRE(report.ok());
-      CHECK_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
+      ASSERT_TRUE(report.ok());
+      EXPECT_EQ(ic::number_of_flipped_faces(chart.mesh, x), 0);
       const double e = ic::mean_distortion(chart.mesh, x);
-      CHECK_MSG(e <= previous, "iteration " << iteration << ": " << e << " > " << previous);
-      CHECK(report.energy <= report.initial_energy);
+      EXPECT_TRUE(e <= previous) << "iteration " << iteration << ": " << e << " > " << previous;
+      EXPECT_TRUE(report.energy <= report.initial_energy);
       previous = e;
       converged = report.status == ic::Newton_status::CONVERGED;
     }
-    CHECK(converged);
-    CHECK(previous < tutte);
+    EXPECT_TRUE(converged);
+    EXPECT_TRUE(previous < tutte);
   }
 }
 
-CUT_TYPED_TEST(tiny_and_zero_weights_still_never_flip, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, tiny_and_zero_weights_still_never_flip)
 {
   // Weights w_f >= 0 are allowed, and the result must be flip-free whatever
   // they are. A tiny weight (the joint method's gamma = 1e-7) keeps a weak
@@ -262,16 +265,16 @@ CUT_TYPED_TEST(tiny_and_zero_weights_still_never_flip, Mesh_types)
   for(double small : {1e-7, 0.})
   for(const Named_soup& disk : disks())
   {
-    Scoped_context ctx(std::string(disk.name) + ", every third face of weight " + to_text(small));
-    TestType mesh;
+    SCOPED_TRACE(std::string(disk.name) + ", every third face of weight " + to_text(small));
+    TypeParam mesh;
     build_mesh(disk.soup, mesh);
     auto weight = get(CGAL::dynamic_face_property_t<double>(), mesh);
     std::size_t i = 0;
     for(auto f : faces(mesh)) put(weight, f, (i++ % 3 == 0) ? small : 1.);
     auto uv = vertex_uv_map(mesh);
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::face_weight_map(weight)), SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
-    CHECK(std::isfinite(SMP::distortion_energy(mesh, uv)));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, SMP::parameters::face_weight_map(weight)), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    EXPECT_TRUE(std::isfinite(SMP::distortion_energy(mesh, uv)));
     // "a line search that never lets a face collapse": no UV triangle is
     // numerically collapsed either (a face at 1e-15 of the mean UV area is
     // flip-free only by the luck of rounding)
@@ -286,11 +289,11 @@ CUT_TYPED_TEST(tiny_and_zero_weights_still_never_flip, Mesh_types)
       total += area;
     }
     const double mean = total / double(num_faces(mesh));
-    CHECK_MSG(min_area > 1e-10 * mean, "smallest UV area / mean UV area = " << min_area / mean);
+    EXPECT_TRUE(min_area > 1e-10 * mean) << "smallest UV area / mean UV area = " << min_area / mean;
   }
 }
 
-CUT_TYPED_TEST(developable_patches_reach_isometry, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, developable_patches_reach_isometry)
 {
   Soup flat = grid_soup(8, 8, 1., 1.);
   jitter_xy(flat, 0.03, 17);
@@ -302,31 +305,31 @@ CUT_TYPED_TEST(developable_patches_reach_isometry, Mesh_types)
                                 {"bent strip without interior vertex", cylinder_patch_soup(7, 1, 1., 2., 0.4)}};
   for(const Named_soup& patch : patches)
   {
-    Scoped_context ctx(patch.name);
-    TestType mesh;
+    SCOPED_TRACE(patch.name);
+    TypeParam mesh;
     build_mesh(patch.soup, mesh);
     auto uv = vertex_uv_map(mesh);
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
     const double energy = SMP::distortion_energy(mesh, uv);
-    CHECK_MSG(energy >= 4. && energy - 4. <= 1e-6, "E_d - 4 = " << energy - 4.);
+    EXPECT_TRUE(energy >= 4. && energy - 4. <= 1e-6) << "E_d - 4 = " << energy - 4.;
   }
 }
 
-CUT_TYPED_TEST(optimum_does_not_depend_on_scale, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, optimum_does_not_depend_on_scale)
 {
   std::vector<Point_2> reference;
   double reference_energy = 0.;
   for(double s : {1., 1e-3, 1e3})
   {
-    Scoped_context ctx("scale " + to_text(s));
+    SCOPED_TRACE("scale " + to_text(s));
     Soup soup = wavy_disk_soup(8, 22, 5);
     soup.scale(s);
-    TestType mesh;
+    TypeParam mesh;
     const auto vertex_of = build_mesh(soup, mesh);
     auto uv = vertex_uv_map(mesh);
-    REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
-    CHECK_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
+    ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv), SMP::OK);
+    EXPECT_EQ(SMP::number_of_flipped_faces(mesh, uv), std::size_t(0));
     const double energy = SMP::distortion_energy(mesh, uv);
     std::vector<Point_2> scaled;
     for(auto v : vertex_of) scaled.push_back(Point_2(get(uv, v).x() / s, get(uv, v).y() / s));
@@ -336,22 +339,22 @@ CUT_TYPED_TEST(optimum_does_not_depend_on_scale, Mesh_types)
       reference_energy = energy;
       continue;
     }
-    CHECK_REL(energy, reference_energy, 1e-8);
+    EXPECT_REL(energy, reference_energy, 1e-8);
     // the UVs themselves scale with the mesh (same start, same iterations)
     double deviation = 0.;
     for(std::size_t i = 0; i < scaled.size(); ++i)
       deviation = (std::max)(deviation, std::sqrt(CGAL::squared_distance(scaled[i], reference[i])));
-    CHECK_MSG(deviation <= 1e-6, "max UV deviation / scale = " << deviation);
+    EXPECT_TRUE(deviation <= 1e-6) << "max UV deviation / scale = " << deviation;
   }
 }
 
-CUT_TYPED_TEST(vertex_point_map_is_used, Mesh_types)
+TYPED_TEST(TutteAndOptimizerTyped, vertex_point_map_is_used)
 {
   // positions given through a vertex_point_map (the mesh's own, scaled by 2)
   // give the same map as a mesh built scaled by 2, for the optimizer and the metrics
-  using vertex_descriptor = typename boost::graph_traits<TestType>::vertex_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<TypeParam>::vertex_descriptor;
   Soup soup = hemisphere_soup(5, 14);
-  TestType mesh;
+  TypeParam mesh;
   const auto vertex_of = build_mesh(soup, mesh);
   auto scaled_points = get(CGAL::dynamic_vertex_property_t<Point_3>(), mesh);
   auto vpm = get(CGAL::vertex_point, mesh);
@@ -361,28 +364,26 @@ CUT_TYPED_TEST(vertex_point_map_is_used, Mesh_types)
     put(scaled_points, v, Point_3(2. * p.x(), 2. * p.y(), 2. * p.z()));
   }
   auto uv = vertex_uv_map(mesh);
-  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, CGAL::parameters::vertex_point_map(scaled_points)),
-             SMP::OK);
+  ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, uv, CGAL::parameters::vertex_point_map(scaled_points)), SMP::OK);
   const double energy = SMP::distortion_energy(mesh, uv, CGAL::parameters::vertex_point_map(scaled_points));
-  CHECK_REL(SMP::surface_area(mesh, CGAL::parameters::vertex_point_map(scaled_points)), 4. * SMP::surface_area(mesh),
-            1e-12);
+  EXPECT_REL(SMP::surface_area(mesh, CGAL::parameters::vertex_point_map(scaled_points)), 4. * SMP::surface_area(mesh), 1e-12);
 
-  TestType big;
+  TypeParam big;
   const auto big_vertex_of = build_mesh(soup.scale(2.), big);
   auto big_uv = vertex_uv_map(big);
-  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(big, big_uv), SMP::OK);
-  CHECK_REL(energy, SMP::distortion_energy(big, big_uv), 1e-10);
+  ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(big, big_uv), SMP::OK);
+  EXPECT_REL(energy, SMP::distortion_energy(big, big_uv), 1e-10);
   double deviation = 0.;
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
     deviation = (std::max)(deviation, std::sqrt(CGAL::squared_distance(get(uv, vertex_of[i]), get(big_uv, big_vertex_of[i]))));
-  CHECK_MSG(deviation <= 1e-9, "max UV deviation " << deviation);
+  EXPECT_TRUE(deviation <= 1e-9) << "max UV deviation " << deviation;
   // the map of the unscaled mesh is not the same: the map was really computed from the given points
   auto plain_uv = vertex_uv_map(mesh);
-  REQUIRE_EQ(SMP::symmetric_dirichlet_parameterize(mesh, plain_uv), SMP::OK);
-  CHECK(std::abs(get(plain_uv, vertex_of[1]).x() - get(uv, vertex_of[1]).x()) > 1e-3);
+  ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(mesh, plain_uv), SMP::OK);
+  EXPECT_TRUE(std::abs(get(plain_uv, vertex_of[1]).x() - get(uv, vertex_of[1]).x()) > 1e-3);
 }
 
-CUT_TEST(sparse_cholesky_solves_large_systems)
+TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
 {
   // a screened grid Laplacian just above and below metis_threshold: the
   // solver (METIS-ordered LLT above the threshold when built with METIS,
@@ -390,7 +391,7 @@ CUT_TEST(sparse_cholesky_solves_large_systems)
   // tiny residual, and refactors a matrix of the same pattern
   for(const int side : {120, int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::metis_threshold)))) + 1})
   {
-    Scoped_context ctx("grid side " + std::to_string(side));
+    SCOPED_TRACE("grid side " + std::to_string(side));
     const int n = side * side;
     std::vector<Eigen::Triplet<double>> triplets;
     for(int i = 0; i < side; ++i)
@@ -408,18 +409,17 @@ CUT_TEST(sparse_cholesky_solves_large_systems)
     ic::Sparse_cholesky solver;
     solver.analyze(A);
     Eigen::VectorXd x;
-    REQUIRE(solver.factorize(A));
-    REQUIRE(solver.solve(b, x));
+    ASSERT_TRUE(solver.factorize(A));
+    ASSERT_TRUE(solver.solve(b, x));
     const Eigen::VectorXd residual = A.selfadjointView<Eigen::Lower>() * x - b;
-    CHECK_MSG(residual.norm() <= 1e-12 * b.norm(), "relative residual " << residual.norm() / b.norm());
+    EXPECT_TRUE(residual.norm() <= 1e-12 * b.norm()) << "relative residual " << residual.norm() / b.norm();
     Eigen::SimplicialLDLT<ic::Sparse_matrix, Eigen::Lower> reference(A);
-    CHECK_MSG((x - reference.solve(b)).norm() <= 1e-10 * x.norm(), "differs from AMD LDLT");
+    EXPECT_TRUE((x - reference.solve(b)).norm() <= 1e-10 * x.norm()) << "differs from AMD LDLT";
     // same pattern, new values: factorize again without a new analysis
     ic::Sparse_matrix B = 2. * A;
-    REQUIRE(solver.factorize(B));
-    REQUIRE(solver.solve(b, x));
-    CHECK_MSG((2. * x - reference.solve(b)).norm() <= 1e-10 * x.norm(), "refactorization differs");
+    ASSERT_TRUE(solver.factorize(B));
+    ASSERT_TRUE(solver.solve(b, x));
+    EXPECT_TRUE((2. * x - reference.solve(b)).norm() <= 1e-10 * x.norm()) << "refactorization differs";
   }
 }
 
-CUT_TEST_MAIN()
