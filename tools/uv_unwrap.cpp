@@ -176,6 +176,7 @@ nlohmann::ordered_json statistics(const Run_summary& s)
   j["seam_edges"] = s.result.number_of_seam_edges;
   j["seam_length"] = number(s.result.seam_length);
   j["distortion"] = number(s.result.distortion);
+  j["distortion_bound_met"] = s.result.distortion_bound_met;
   j["initial_distortion"] = number(s.result.initial_distortion);
   j["flipped_faces"] = s.flipped_faces;
   j["border_crossings"] = s.border_crossings;
@@ -414,6 +415,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   P::epsilon_end(options.epsilon_end,
                   P::iterations_per_epsilon(options.iterations,
                   P::number_of_passes(options.passes,
+                  P::distortion_bound(options.max_distortion,
                   P::global_injectivity(!options.allow_overlaps,
                   P::world_units(options.world_units,
                   P::texture_size(options.texture_size,
@@ -422,7 +424,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   P::bounding_box_stiffness(options.box_stiffness,
                   P::bounding_box_distortion_budget(options.box_distortion_budget,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress))))))))))))))));
+                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
@@ -430,6 +432,13 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   if(!summary.result.ok())
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
                   SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
+  if(!summary.result.distortion_bound_met)
+  {
+    const std::string w = "E_d " + std::to_string(summary.result.distortion) + " is above --max-distortion " +
+                          std::to_string(options.max_distortion) + ": no seam cost tried reached it (lowest E_d kept)";
+    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    summary.warnings.push_back(w);
+  }
   if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
   summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
@@ -528,6 +537,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       summary.uv_in_unit_square = summary.uv_in_unit_square && part.uv_in_unit_square;
       summary.time_seconds += part.time_seconds;
       total.number_of_charts += r.number_of_charts;
+      total.distortion_bound_met = total.distortion_bound_met && r.distortion_bound_met;
       total.number_of_seam_edges += r.number_of_seam_edges;
       total.number_of_degenerate_faces += r.number_of_degenerate_faces;
       total.newton_iterations += r.newton_iterations;

@@ -173,6 +173,11 @@ bool parse_arguments(int argc, char** argv, Options& options)
     ->type_name("N")->transform(count())->group(method);
   app.add_option("--passes", options.passes, "optimize-and-cut passes (default 1)")
     ->type_name("N")->transform(count())->group(method);
+  app.add_option("--max-distortion", options.max_distortion,
+                 "E_d at most B (>= 4), with seams as short as the search on\n"
+                 "the seam cost finds (3 to 9 runs; distortion_bound)")
+    ->type_name("B")->transform(number("a number >= 4", [](double x) { return x >= 4.; }))
+    ->group(method);
 
   const std::string seams = "Seams";
   app.add_option("--hide-seams", options.hide_seams,

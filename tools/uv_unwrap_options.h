@@ -36,6 +36,7 @@ struct Options
   double epsilon_end = 0.01;
   int iterations = 3;
   int passes = 1;
+  double max_distortion = 0.;    // > 0: distortion_bound
   // atlas
   bool allow_overlaps = false;   // global_injectivity(false)
   bool world_units = false;

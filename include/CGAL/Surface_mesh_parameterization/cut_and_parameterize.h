@@ -4,6 +4,7 @@
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas_validity.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/distortion_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
@@ -65,6 +66,10 @@ struct Cut_and_parameterize_result
   double uv_coverage = 0.;
   /// UV length per unit of 3D length (the common scale of all charts; 1 with `world_units`)
   double uv_scale = 1.;
+  /// with `distortion_bound`: whether `distortion` is within it (if not, no
+  /// seam cost tried reached it and the result is the lowest E_d found);
+  /// always `true` without a bound
+  bool distortion_bound_met = true;
   /// where the time went
   Cut_and_parameterize_timings timings;
   /// `true` if `error` is `OK`
@@ -110,6 +115,7 @@ Joint_settings joint_settings(const NamedParameters& np)
     s.bounding_box_distortion_budget = std::numeric_limits<double>::infinity();
   s.bounding_box_distortion_budget = choose_parameter(get_parameter(np, internal_np::bounding_box_distortion_budget),
                                                       s.bounding_box_distortion_budget);
+  s.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), s.distortion_bound);
   s.multiresolution_faces = choose_parameter(get_parameter(np, internal_np::multiresolution_faces),
                                              s.multiresolution_faces);
   s.global_injectivity = choose_parameter(get_parameter(np, internal_np::global_injectivity), s.global_injectivity);
@@ -295,6 +301,13 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     is dropped. Default 0.045 (`gentle_bounding_box_distortion_budget`)
 ///     for the default box; no limit (the box is kept as asked) once
 ///     `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given
+///   - `distortion_bound`: double ≥ 4, the result's E_d must be at most this,
+///     with seams as short as the search finds: whole runs with the seam cost
+///     λ halved (at most 6 times) until E_d is within the bound, or doubled (at
+///     most 3 times) while it is, then 2 bisections; the result is the run
+///     within the bound with the largest λ. If no run reaches the bound, the
+///     run with the lowest E_d is returned and `distortion_bound_met` is false.
+///     Costs 3 to 9 runs. Default: no bound
 ///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this
 ///     many faces, the alternation decides the cuts on a copy simplified to
 ///     about this many faces (CGAL's Surface_mesh_simplification, keeping the
@@ -390,7 +403,10 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
     return finish(ERROR_WRONG_PARAMETER);
   state.timings.initialization = ic::seconds_since(start); // joint_optimization() adds the rest
 
-  const Error_code status = ic::joint_optimization(surface, face_lambda, settings, state);
+  const Error_code status =
+    settings.distortion_bound > 0.
+      ? ic::bounded_joint_optimization(surface, face_lambda, settings, state, result.distortion_bound_met)
+      : ic::joint_optimization(surface, face_lambda, settings, state);
   if(status != OK) return finish(status);
 
   ic::write_corner_uvs(mesh, surface, state, uvmap);

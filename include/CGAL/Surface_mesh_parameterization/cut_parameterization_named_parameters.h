@@ -40,6 +40,8 @@ CGAL_SMP_CUT_NAMED_PARAMETER(stopping_tolerance_t, stopping_tolerance)
 CGAL_SMP_CUT_NAMED_PARAMETER(lambda_t, lambda)
 /// Per-face λ (face -> double), multiplies `lambda`.
 CGAL_SMP_CUT_NAMED_PARAMETER(face_lambda_map_t, face_lambda_map)
+/// The result must have E_d at most this (double >= 4; default: no bound): λ is searched for it.
+CGAL_SMP_CUT_NAMED_PARAMETER(distortion_bound_t, distortion_bound)
 /// Edges never cut (edge -> bool): not by the initial cut, the alternation's cuts or any later step.
 CGAL_SMP_CUT_NAMED_PARAMETER(forbidden_seam_edge_map_t, forbidden_seam_edge_map)
 /// ε at the first alternation, relative to the mean edge length (default 0.1).

@@ -66,6 +66,8 @@ struct Joint_settings
   // Multiresolution: on a mesh of more than twice this many faces, the cuts
   // are decided on a copy simplified to about this many (0: never).
   int multiresolution_faces = 10000;
+  // > 0: the result must have E_d <= this (distortion_bound.h searches λ); 0: no bound
+  double distortion_bound = 0.;
   Packing_settings packing;
   std::function<bool(const Joint_progress&)> progress; // false: cancel
 
@@ -77,6 +79,7 @@ struct Joint_settings
         && bounding_box_aspect_ratio >= 0. && std::isfinite(bounding_box_aspect_ratio)
         && bounding_box_stiffness >= 0. && std::isfinite(bounding_box_stiffness)
         && bounding_box_distortion_budget >= 0. && multiresolution_faces >= 0
+        && (distortion_bound == 0. || (distortion_bound >= 4. && std::isfinite(distortion_bound)))
         && packing.texture_size >= 1 && packing.padding >= 0. && std::isfinite(packing.padding);
   }
 

@@ -1,0 +1,118 @@
+// A distortion bound: the shortest seams whose map has E_d <= bound, found
+// by searching the seam cost λ (the only knob that trades seam length for
+// distortion). Each trial is a whole joint_optimization() from the same
+// start; E_d falls as λ falls, so the search walks λ down (halving) until the
+// bound holds, or up (doubling) while it holds, then bisects λ between the
+// last failing and the best passing value (in log scale). The result is the
+// passing trial with the largest λ; if none passes, the trial with the
+// lowest E_d.
+#ifndef CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
+#define CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// How the search for a bound goes (the defaults are what `distortion_bound`
+/// uses).
+struct Bound_search_settings
+{
+  int steps_down = 6;   // halvings of λ at most (λ / 64)
+  int steps_up = 3;     // doublings of λ at most (λ · 8)
+  int bisections = 2;   // refinements between failing and passing λ
+};
+
+/// joint_optimization() under `settings.distortion_bound` (> 0): fills
+/// `state` with the chosen trial; `bound_met` tells whether its E_d is
+/// within the bound. The Newton counts and times add up over the trials.
+template <typename Surface>
+Error_code bounded_joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
+                                      const Joint_settings& settings, Joint_state& state, bool& bound_met,
+                                      const Bound_search_settings& search = Bound_search_settings())
+{
+  const Joint_state start = state;
+  const double bound = settings.distortion_bound;
+  Joint_state best_pass, best_any;
+  double best_pass_lambda = 0.;
+  bool have_pass = false, have_any = false;
+  std::vector<double> failed; // λ of the trials above the bound
+  std::size_t newton = 0, factorizations = 0;
+  Joint_timings timings = start.timings; // what came before (indexing)
+
+  auto trial = [&](double lambda, bool& passed) {
+    Joint_settings trial_settings = settings;
+    trial_settings.lambda = lambda;
+    Joint_state s = start;
+    const Error_code status = joint_optimization(surface, face_lambda, trial_settings, s);
+    newton += s.newton_iterations;
+    factorizations += s.factorizations;
+    timings.initialization += s.timings.initialization - start.timings.initialization;
+    timings.u_steps += s.timings.u_steps;
+    timings.v_steps += s.timings.v_steps;
+    timings.cut_extraction += s.timings.cut_extraction;
+    timings.final_solve += s.timings.final_solve;
+    timings.packing += s.timings.packing;
+    if(status != OK) return status;
+    passed = s.distortion <= bound;
+    if(!passed) failed.push_back(lambda);
+    if(passed && (!have_pass || lambda > best_pass_lambda))
+    {
+      best_pass = s;
+      best_pass_lambda = lambda;
+      have_pass = true;
+    }
+    if(!have_any || s.distortion < best_any.distortion)
+    {
+      best_any = std::move(s);
+      have_any = true;
+    }
+    return OK;
+  };
+
+  double lambda = settings.lambda;
+  bool passed = false;
+  Error_code status = trial(lambda, passed);
+  if(status != OK) return status;
+  if(passed)
+    for(int k = 0; k < search.steps_up && passed; ++k)
+    {
+      lambda *= 2.;
+      if((status = trial(lambda, passed)) != OK) return status;
+    }
+  else
+    for(int k = 0; k < search.steps_down && !passed; ++k)
+    {
+      lambda *= 0.5;
+      if((status = trial(lambda, passed)) != OK) return status;
+    }
+  // between the best passing λ and the smallest failing one above it
+  for(int k = 0; k < search.bisections && have_pass; ++k)
+  {
+    double above = 0.;
+    for(double f : failed)
+      if(f > best_pass_lambda && (above == 0. || f < above)) above = f;
+    if(above == 0.) break;
+    if((status = trial(std::sqrt(best_pass_lambda * above), passed)) != OK) return status;
+  }
+
+  state = have_pass ? std::move(best_pass) : std::move(best_any);
+  bound_met = have_pass;
+  state.newton_iterations = newton;
+  state.factorizations = factorizations;
+  state.timings = timings;
+  return OK;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
