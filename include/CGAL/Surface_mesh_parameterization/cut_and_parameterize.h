@@ -305,7 +305,7 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     with seams as short as the search finds: whole runs with the seam cost
 ///     λ halved (at most 6 times) until E_d is within the bound, or doubled (at
 ///     most 3 times) while it is, then 2 bisections; the result is the run
-///     within the bound with the largest λ. If no run reaches the bound, the
+///     within the bound with the shortest seams. If no run reaches the bound, the
 ///     run with the lowest E_d is returned and `distortion_bound_met` is false.
 ///     Costs 3 to 9 runs. Default: no bound
 ///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this

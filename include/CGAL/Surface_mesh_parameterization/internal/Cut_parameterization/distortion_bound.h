@@ -1,16 +1,18 @@
 // A distortion bound: the shortest seams whose map has E_d <= bound, found
-// by searching the seam cost λ (the only knob that trades seam length for
+// by searching the seam cost λ (the knob that trades seam length for
 // distortion). Each trial is a whole joint_optimization() from the same
 // start; E_d falls as λ falls, so the search walks λ down (halving) until the
 // bound holds, or up (doubling) while it holds, then bisects λ between the
-// last failing and the best passing value (in log scale). The result is the
-// passing trial with the largest λ; if none passes, the trial with the
-// lowest E_d.
+// largest passing and the smallest failing value above it (in log scale).
+// The result is the passing trial with the shortest seams (E_s is not
+// monotone in λ: on hand1 of the OptCuts set the largest passing λ cut
+// more); if none passes, the trial with the lowest E_d.
 #ifndef CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -29,6 +31,16 @@ struct Bound_search_settings
   int bisections = 2;   // refinements between failing and passing λ
 };
 
+/// 3D length of the cut edges that are not on the mesh's border.
+template <typename Surface>
+double seam_length_3d(const Surface& surface, const std::vector<char>& is_cut)
+{
+  double length = 0.;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] > fe && is_cut[surface.edge_of[fe]]) length += surface.edge_length(fe);
+  return length;
+}
+
 /// joint_optimization() under `settings.distortion_bound` (> 0): fills
 /// `state` with the chosen trial; `bound_met` tells whether its E_d is
 /// within the bound. The Newton counts and times add up over the trials.
@@ -40,7 +52,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   const Joint_state start = state;
   const double bound = settings.distortion_bound;
   Joint_state best_pass, best_any;
-  double best_pass_lambda = 0.;
+  double best_pass_length = 0.; // 3D length of the seams of best_pass
+  double best_pass_lambda = 0.; // the largest λ that passed (the bisection's lower end)
   bool have_pass = false, have_any = false;
   std::vector<double> failed; // λ of the trials above the bound
   std::size_t newton = 0, factorizations = 0;
@@ -62,10 +75,15 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     if(status != OK) return status;
     passed = s.distortion <= bound;
     if(!passed) failed.push_back(lambda);
-    if(passed && (!have_pass || lambda > best_pass_lambda))
+    if(passed)
     {
-      best_pass = s;
-      best_pass_lambda = lambda;
+      const double length = seam_length_3d(surface, s.is_cut);
+      if(!have_pass || length < best_pass_length)
+      {
+        best_pass = s;
+        best_pass_length = length;
+      }
+      best_pass_lambda = (std::max)(best_pass_lambda, lambda);
       have_pass = true;
     }
     if(!have_any || s.distortion < best_any.distortion)
