@@ -423,3 +423,60 @@ TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
   }
 }
 
+
+TEST(TutteAndOptimizer, sparse_cholesky_block_ordering)
+{
+  // two unknowns per grid node coupled as the (u, v) of a UV vertex, below
+  // and above metis_threshold: ordering the nodes (block size 2) solves the
+  // system as ordering the unknowns does, with the same fill (the factor's
+  // cost is measured by the benchmark), and after a change of pattern of the
+  // same size (a scaffold rebuilt) the new analysis still solves it
+  for(const int side : {60, int(std::ceil(std::sqrt(0.5 * double(ic::Sparse_cholesky::metis_threshold)))) + 1})
+  {
+    SCOPED_TRACE("grid side " + std::to_string(side));
+    const int nodes = side * side, n = 2 * nodes;
+    auto grid = [&](bool extra_links) {
+      std::vector<Eigen::Triplet<double>> triplets;
+      auto couple = [&](int p, int q, double w) { // node p >= q: a 2x2 block, lower part
+        for(int a = 0; a < 2; ++a)
+          for(int c = 0; c < 2; ++c)
+            if(2 * p + a >= 2 * q + c) triplets.emplace_back(2 * p + a, 2 * q + c, a == c ? w : 0.25 * w);
+      };
+      for(int i = 0; i < side; ++i)
+        for(int j = 0; j < side; ++j)
+        {
+          const int k = i * side + j;
+          couple(k, k, 8.01);
+          if(i > 0) couple(k, k - side, -1.);
+          if(j > 0) couple(k, k - 1, -1.);
+          if(extra_links && i > 1 && j > 1 && (i + j) % 5 == 0) couple(k, k - 2 * side - 2, -0.5);
+        }
+      ic::Sparse_matrix A(n, n);
+      A.setFromTriplets(triplets.begin(), triplets.end());
+      return A;
+    };
+    Eigen::VectorXd b(n);
+    for(int k = 0; k < n; ++k) b[k] = std::cos(0.11 * k) + 0.05 * (k % 5);
+    ic::Sparse_cholesky blocks; // analyzed again for the second pattern
+    for(const bool extra_links : {false, true})
+    {
+      const ic::Sparse_matrix A = grid(extra_links);
+      Eigen::VectorXd by_unknowns, by_nodes;
+      ic::Sparse_cholesky unknowns;
+      unknowns.analyze(A, 1);
+      blocks.analyze(A, 2);
+      ASSERT_TRUE(unknowns.factorize(A) && unknowns.solve(b, by_unknowns));
+      ASSERT_TRUE(blocks.factorize(A) && blocks.solve(b, by_nodes));
+      const Eigen::VectorXd residual = A.selfadjointView<Eigen::Lower>() * by_nodes - b;
+      EXPECT_TRUE(residual.norm() <= 1e-12 * b.norm()) << "relative residual " << residual.norm() / b.norm();
+      EXPECT_TRUE((by_nodes - by_unknowns).norm() <= 1e-10 * by_nodes.norm());
+    }
+    // an odd size cannot be in blocks of 2: ordered by unknowns
+    const ic::Sparse_matrix odd = grid(false).topLeftCorner(n - 1, n - 1);
+    ic::Sparse_cholesky solver;
+    solver.analyze(odd, 2);
+    Eigen::VectorXd x;
+    ASSERT_TRUE(solver.factorize(odd) && solver.solve(b.head(n - 1), x));
+    EXPECT_TRUE((odd.selfadjointView<Eigen::Lower>() * x - b.head(n - 1)).norm() <= 1e-12 * b.norm());
+  }
+}

@@ -57,7 +57,7 @@ class Projected_newton_solver
     hessian_.clear();
     for(Energy_term* term : terms_) term->declare_elements(hessian_);
     hessian_.finalize(dimension_);
-    cholesky_.analyze(hessian_.matrix());
+    cholesky_.analyze(hessian_.matrix(), 2); // unknowns (u, v) of each UV vertex ordered together
     pattern_built_ = true;
   }
 

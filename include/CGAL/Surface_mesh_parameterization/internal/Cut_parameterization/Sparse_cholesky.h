@@ -4,11 +4,18 @@
 // dissection; from cholmod_threshold unknowns and when CGAL_SMP_CUT_USE_CHOLMOD
 // is defined, CHOLMOD's supernodal Cholesky (dense blocks through BLAS). Only
 // the lower triangle of the matrix is read.
+//
+// The fill-reducing ordering of the simplicial solvers is computed here, on
+// the graph of the UV vertices rather than of the unknowns (order()): a
+// scaffold changes the pattern at every Newton iteration, and Eigen's AMD
+// on all the unknowns cost more than the factorization itself.
 #ifndef CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
 #define CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+
+#include <vector>
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
@@ -27,15 +34,22 @@ using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 class Sparse_cholesky
 {
   enum class Method { AMD, METIS, CHOLMOD };
-  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> amd_;
+  using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
+  // The simplicial solvers factorize the permuted matrix P A P^T, stored as
+  // its upper triangle, in its natural order (what they do inside with an
+  // ordering of their own); CHOLMOD orders A itself (P = identity).
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt_;
 #ifdef CGAL_SMP_CUT_USE_METIS
-  Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::MetisOrdering<int>> metis_;
+  Eigen::SimplicialLLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> llt_;
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> cholmod_;
+  Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Upper> cholmod_;
 #endif
   Method method_ = Method::AMD;
   bool analyzed_ = false;
+  Permutation permutation_, inverse_permutation_; // P and P^-1
+  Sparse_matrix permuted_;                         // upper triangle of P A P^T
+  Eigen::VectorXd permuted_b_, permuted_x_;
 
   template <typename F>
   decltype(auto) with_solver(F&& f)
@@ -44,9 +58,50 @@ class Sparse_cholesky
     if(method_ == Method::CHOLMOD) return f(cholmod_);
 #endif
 #ifdef CGAL_SMP_CUT_USE_METIS
-    if(method_ == Method::METIS) return f(metis_);
+    if(method_ == Method::METIS) return f(llt_);
 #endif
-    return f(amd_);
+    return f(ldlt_);
+  }
+
+  void permute(const Sparse_matrix& A)
+  {
+    permuted_.resize(A.rows(), A.cols());
+    permuted_.selfadjointView<Eigen::Upper>() = A.selfadjointView<Eigen::Lower>().twistedBy(permutation_);
+  }
+
+  /// A fill-reducing ordering of A. With block_size b > 1, the unknowns come
+  /// in groups of b consecutive ones (the u and v of a UV vertex) coupled
+  /// together: the graph of the groups is ordered, b times smaller, and
+  /// each group stays together; the fill is the same.
+  void order(const Sparse_matrix& A, int block_size)
+  {
+    const int b = (block_size > 1 && A.rows() % block_size == 0) ? block_size : 1;
+    const int n = int(A.rows()) / b;
+    Sparse_matrix symmetric(n, n);
+    if(b == 1) symmetric = A.selfadjointView<Eigen::Lower>();
+    else
+    {
+      std::vector<Eigen::Triplet<double>> entries;
+      entries.reserve(2 * A.nonZeros() / (b * b) + n);
+      for(int col = 0; col < A.outerSize(); ++col)
+        for(Sparse_matrix::InnerIterator it(A, col); it; ++it)
+        {
+          const int i = int(it.row()) / b, j = col / b;
+          entries.emplace_back(i, j, 1.);
+          if(i != j) entries.emplace_back(j, i, 1.);
+        }
+      symmetric.setFromTriplets(entries.begin(), entries.end());
+    }
+    Permutation groups;
+#ifdef CGAL_SMP_CUT_USE_METIS
+    if(method_ != Method::AMD) Eigen::MetisOrdering<int>()(symmetric, groups);
+    else
+#endif
+      Eigen::AMDOrdering<int>()(symmetric, groups);
+    inverse_permutation_.resize(int(A.rows()));
+    for(int g = 0; g < n; ++g)
+      for(int k = 0; k < b; ++k) inverse_permutation_.indices()[b * g + k] = b * groups.indices()[g] + k;
+    permutation_ = inverse_permutation_.inverse();
   }
 
 public:
@@ -54,8 +109,7 @@ public:
   /// of the distortion Hessian on bimba_i_f10000 and its midpoint subdivisions,
   /// AMD-ordered LDLT vs METIS-ordered LLT (2 cores, one thread): 10k unknowns
   /// 18 vs 18 ms, 20k 54 vs 42 ms, 40k 193 vs 93 ms, 160k 3.5 vs 1.3 s; the
-  /// analysis costs METIS 10-70% more, which the scaffold pays per iteration.
-  /// Below the threshold the benchmark meshes keep AMD's results bit for bit.
+  /// ordering costs METIS 10-70% more.
   static constexpr Eigen::Index metis_threshold = 30000;
 
   /// Unknowns from which CHOLMOD's supernodal factorization takes over (if
@@ -66,7 +120,13 @@ public:
   static constexpr Eigen::Index cholmod_threshold = 100000;
 
   /// Symbolic analysis; call again only when the pattern changes.
-  void analyze(const Sparse_matrix& A)
+  /// `block_size`: see order(). Ordering the 2 unknowns of each UV vertex
+  /// together (block size 2) gives the same fill for a fraction of the time;
+  /// ordering + symbolic analysis of the distortion Hessian on bimba_i_f10000
+  /// and its midpoint subdivisions (2 cores, one thread), all unknowns vs
+  /// vertices: 10k unknowns 20 vs 8 ms (AMD), 20k 57 vs 16 ms, 40k 162 vs
+  /// 116 ms (METIS); factorizations within 1%.
+  void analyze(const Sparse_matrix& A, int block_size = 1)
   {
     method_ = Method::AMD;
 #ifdef CGAL_SMP_CUT_USE_METIS
@@ -75,7 +135,15 @@ public:
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
     if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
 #endif
-    with_solver([&](auto& s) { s.analyzePattern(A); });
+    if(method_ == Method::CHOLMOD)
+    {
+      permutation_.setIdentity(int(A.rows()));
+      inverse_permutation_.setIdentity(int(A.rows()));
+    }
+    else
+      order(A, block_size);
+    permute(A);
+    with_solver([&](auto& s) { s.analyzePattern(permuted_); });
     analyzed_ = true;
   }
 
@@ -83,13 +151,19 @@ public:
   bool factorize(const Sparse_matrix& A)
   {
     if(!analyzed_) analyze(A);
-    return with_solver([&](auto& s) { s.factorize(A); return s.info() == Eigen::Success; });
+    else permute(A);
+    return with_solver([&](auto& s) { s.factorize(permuted_); return s.info() == Eigen::Success; });
   }
 
   /// Solves A x = b with the last factorization; false if it failed or x is not finite.
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
   {
-    return with_solver([&](auto& s) { x = s.solve(b); return s.info() == Eigen::Success && x.allFinite(); });
+    permuted_b_ = permutation_ * b;
+    return with_solver([&](auto& s) {
+      permuted_x_ = s.solve(permuted_b_);
+      x = inverse_permutation_ * permuted_x_;
+      return s.info() == Eigen::Success && x.allFinite();
+    });
   }
 };
 
