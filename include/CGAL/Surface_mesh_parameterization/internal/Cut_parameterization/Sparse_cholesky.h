@@ -37,26 +37,24 @@ class Sparse_cholesky
   using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
   // The simplicial solvers factorize the permuted matrix P A P^T, stored as
   // its upper triangle, in its natural order (what they do inside with an
-  // ordering of their own); CHOLMOD orders A itself (P = identity).
+  // ordering of their own); CHOLMOD orders and factorizes A itself.
   Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt_;
 #ifdef CGAL_SMP_CUT_USE_METIS
   Eigen::SimplicialLLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> llt_;
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Upper> cholmod_;
+  Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> cholmod_;
 #endif
   Method method_ = Method::AMD;
   bool analyzed_ = false;
-  Permutation permutation_, inverse_permutation_; // P and P^-1
+  Permutation permutation_, inverse_permutation_; // P and P^-1 (simplicial solvers only)
   Sparse_matrix permuted_;                         // upper triangle of P A P^T
   Eigen::VectorXd permuted_b_, permuted_x_;
 
+  /// Calls f with the simplicial solver in use (CHOLMOD is called directly).
   template <typename F>
-  decltype(auto) with_solver(F&& f)
+  decltype(auto) with_simplicial_solver(F&& f)
   {
-#ifdef CGAL_SMP_CUT_USE_CHOLMOD
-    if(method_ == Method::CHOLMOD) return f(cholmod_);
-#endif
 #ifdef CGAL_SMP_CUT_USE_METIS
     if(method_ == Method::METIS) return f(llt_);
 #endif
@@ -135,31 +133,38 @@ public:
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
     if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
 #endif
-    if(method_ == Method::CHOLMOD)
-    {
-      permutation_.setIdentity(int(A.rows()));
-      inverse_permutation_.setIdentity(int(A.rows()));
-    }
-    else
-      order(A, block_size);
-    permute(A);
-    with_solver([&](auto& s) { s.analyzePattern(permuted_); });
     analyzed_ = true;
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+    if(method_ == Method::CHOLMOD) { cholmod_.analyzePattern(A); return; }
+#endif
+    order(A, block_size);
+    permute(A);
+    with_simplicial_solver([&](auto& s) { s.analyzePattern(permuted_); });
   }
 
   /// Numeric factorization of a matrix with the analyzed pattern.
   bool factorize(const Sparse_matrix& A)
   {
     if(!analyzed_) analyze(A);
-    else permute(A);
-    return with_solver([&](auto& s) { s.factorize(permuted_); return s.info() == Eigen::Success; });
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+    if(method_ == Method::CHOLMOD) { cholmod_.factorize(A); return cholmod_.info() == Eigen::Success; }
+#endif
+    permute(A);
+    return with_simplicial_solver([&](auto& s) { s.factorize(permuted_); return s.info() == Eigen::Success; });
   }
 
   /// Solves A x = b with the last factorization; false if it failed or x is not finite.
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
   {
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+    if(method_ == Method::CHOLMOD)
+    {
+      x = cholmod_.solve(b);
+      return cholmod_.info() == Eigen::Success && x.allFinite();
+    }
+#endif
     permuted_b_ = permutation_ * b;
-    return with_solver([&](auto& s) {
+    return with_simplicial_solver([&](auto& s) {
       permuted_x_ = s.solve(permuted_b_);
       x = inverse_permutation_ * permuted_x_;
       return s.info() == Eigen::Success && x.allFinite();
