@@ -99,7 +99,7 @@ int parse_options(int argc, char** argv, Options& opt)
     ->type_name("N")->check(CLI::NonNegativeNumber);
   comparison_only.push_back(
     app.add_flag("--allow-overlaps", opt.allow_overlaps,
-                 "global_injectivity(false): no scaffold (with --box-stiffness 0, the\n"
+                 "global_injectivity(false): no border barrier (with --box-stiffness 0, the\n"
                  "map as it was before the atlas work, only packed)")->group(comparison));
   app.add_option("--repeat", opt.repeat,
                  "runs per mesh; the time reported is their median (default 1;\n"

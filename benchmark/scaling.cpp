@@ -426,7 +426,7 @@ int run_scaling(const Options& opt)
             << "times: wall seconds of cut_and_parameterize() (Cut_and_parameterize_result::timings): "
                "init = indexing, initial cut, chart mesh, Tutte map; u_steps = Newton minimizations of the "
                "alternation; v_steps = discontinuity-field solves; cut = cut paths and cutting; final = final "
-               "solve (scaffold re-solve included); packing; the rest of total_s is argument checks, outputs "
+               "solve (injective re-solve included); packing; the rest of total_s is argument checks, outputs "
                "and statistics\n"
             << "factorizations: numeric Cholesky factorizations of the Newton Hessians\n"
             << "peak_MB: maximum resident set size of the child process that read (and subdivided) the mesh "

@@ -1,5 +1,5 @@
 // The atlas is usable as a texture: global injectivity (no crossing UV
-// borders, the scaffold of Scaffold_term.h), packing into the unit square,
+// borders, the barrier of Border_barrier_term.h), packing into the unit square,
 // the bounding-box term.
 //
 // Shapes built to overlap when laid flat (a spiral ramp, a thin annulus on a
@@ -10,9 +10,9 @@
 // terms' gradients are checked against finite differences.
 #include "cut_result_checks.h"
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scaffold_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 
 #include <limits>
@@ -42,7 +42,7 @@ std::pair<double, double> unwrap_both_ways(const Soup& soup)
   free_run.run(P::global_injectivity(false));
   check_cut_result(mesh, free_run);
   // the shape does overlap when nothing prevents it
-  CUT_ASSERT_TRUE(free_run.result.border_crossings > 0) << "the test shape does not overlap without the scaffold";
+  CUT_ASSERT_TRUE(free_run.result.border_crossings > 0) << "the test shape does not overlap without the barrier";
 
   Cut_run<Mesh> run(mesh);
   run.run();
@@ -125,7 +125,7 @@ TEST(Injectivity, world_units_keep_the_scale_and_stay_injective)
 
 TEST(Injectivity, no_change_where_nothing_overlaps)
 {
-  // a disk whose map does not overlap: the same UVs with or without the scaffold
+  // a disk whose map does not overlap: the same UVs with or without the barrier
   Surface_mesh mesh;
   build_mesh(wavy_disk_soup(10, 30, 3), mesh);
   Cut_run<Surface_mesh> free_run(mesh), run(mesh);
@@ -231,43 +231,133 @@ TEST(Injectivity, bounding_box_stays_within_its_distortion_budget)
   EXPECT_EQ(bad.run(P::bounding_box_distortion_budget(std::nan(""))).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
-TEST(Injectivity, scaffold_gradient_matches_finite_differences)
+/// The Tutte map of a flat disk squashed across: opposite border parts come
+/// within the barrier distance of each other, without flips or crossings.
+ic::UV_vector squashed(const Disk_chart& chart, double factor)
 {
-  Disk_chart chart;
-  make_disk_chart(wavy_disk_soup(6, 18, 2), chart);
-  ic::Scaffold_term scaffold(chart.mesh);
-  ASSERT_TRUE(scaffold.update(chart.x) == ic::Energy_term::Update::ELEMENTS);
-  ASSERT_TRUE(scaffold.number_of_triangles() > 0);
-  // at the rebuild the scaffold is at rest: no energy, no gradient
-  check_gradient(scaffold, chart.x, 1);
-  // away from rest
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
-  ic::UV_vector y = chart.x;
-  for(Eigen::Index i = 0; i < y.size(); ++i) y[i] += jitter(rng);
-  ASSERT_TRUE(std::isfinite(scaffold.value(y)));
-  check_gradient(scaffold, y, 2);
+  ic::UV_vector x = chart.x;
+  for(Eigen::Index i = 1; i < x.size(); i += 2) x[i] *= factor;
+  return x;
 }
 
-TEST(Injectivity, scaffold_stops_a_border_before_it_crosses_another)
+TEST(Injectivity, border_barrier_gradient_matches_finite_differences)
 {
   Disk_chart chart;
   make_disk_chart(flat_disk_soup(4, 16), chart);
-  ic::Scaffold_term scaffold(chart.mesh);
-  scaffold.update(chart.x);
-  EXPECT_TRUE(!scaffold.has_crossing(chart.x));
-  // push one border vertex straight across the disk: the step is cut before
-  // it leaves the free space, and the full step is not admissible
+  ic::Border_barrier_term barrier(chart.mesh);
+  ASSERT_TRUE(barrier.epsilon() > 0.);
+  // far apart: no pair, no energy, the pattern stays
+  EXPECT_TRUE(barrier.update(chart.x) == ic::Energy_term::Update::VALUES);
+  EXPECT_EQ(barrier.number_of_declared_pairs(), std::size_t(0));
+  EXPECT_EQ(barrier.value(chart.x), 0.);
+  // squashed: pairs come close, the pattern grows, the energy is positive
+  const ic::UV_vector x = squashed(chart, 0.03);
+  ASSERT_TRUE(!barrier.has_crossing(x));
+  EXPECT_TRUE(barrier.update(x) == ic::Energy_term::Update::MORE_ELEMENTS);
+  EXPECT_TRUE(barrier.number_of_declared_pairs() > 0);
+  EXPECT_TRUE(barrier.value(x) > 0.);
+  EXPECT_TRUE(barrier.update(x) == ic::Energy_term::Update::VALUES); // nothing new at the same x
+  check_gradient(barrier, x, 1);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.002, 0.002);
+  ic::UV_vector y = x;
+  for(Eigen::Index i = 0; i < y.size(); ++i) y[i] += jitter(rng);
+  barrier.update(y);
+  ASSERT_TRUE(std::isfinite(barrier.value(y)) && barrier.value(y) > 0.);
+  check_gradient(barrier, y, 2);
+}
+
+TEST(Injectivity, border_barrier_hessian_is_positive_semidefinite)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(4, 16), chart);
+  auto hessian_at = [](ic::Border_barrier_term& barrier, const ic::UV_vector& x) {
+    ic::Hessian_assembler hessian;
+    barrier.declare_elements(hessian);
+    hessian.finalize(int(x.size()));
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+    barrier.add_gradient_and_hessian(x, gradient, hessian);
+    return Eigen::MatrixXd(Eigen::MatrixXd(hessian.matrix()).selfadjointView<Eigen::Lower>());
+  };
+  auto expect_psd = [](const Eigen::MatrixXd& H) {
+    ASSERT_TRUE(H.norm() > 0.);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(H);
+    EXPECT_TRUE(eigen.eigenvalues().minCoeff() >= -1e-9 * eigen.eigenvalues().maxCoeff());
+  };
+  // every close pair in the pattern
+  const ic::UV_vector x = squashed(chart, 0.03);
+  ic::Border_barrier_term barrier(chart.mesh);
+  barrier.update(x);
+  ASSERT_EQ(barrier.number_of_undeclared_close_pairs(x), std::size_t(0));
+  expect_psd(hessian_at(barrier, x));
+  // a pattern made where the disk was round, the disk squashed since: the
+  // pairs that came close add only their diagonal blocks, and the matrix
+  // stays PSD; their gradient counts in full
+  ic::Border_barrier_term late(chart.mesh);
+  late.update(squashed(chart, 0.5));
+  const std::size_t declared = late.number_of_declared_pairs();
+  ASSERT_TRUE(!late.has_crossing(x));
+  ASSERT_TRUE(late.number_of_undeclared_close_pairs(x) > 0);
+  expect_psd(hessian_at(late, x));
+  EXPECT_EQ(late.number_of_declared_pairs(), declared);
+  check_gradient(late, x, 3);
+}
+
+/// Where the map squashes the border to a fraction of its 3D length (a Tutte
+/// map of a mesh with holes), ε follows the map's scale: the pairs and the
+/// energy of a squashed chart are the same at any smaller scale, and a
+/// vertex does not pair with every segment (as with one ε in 3D units).
+TEST(Injectivity, border_barrier_distance_follows_a_squashed_border)
+{
+  for(int segments : {48, 96})
+  {
+    Disk_chart chart;
+    make_disk_chart(flat_disk_soup(6, segments), chart);
+    const ic::UV_vector x = squashed(chart, 0.03);
+    std::vector<std::size_t> pairs;
+    std::vector<double> energy;
+    for(double scale : {1e-3, 1e-6})
+    {
+      ic::Border_barrier_term barrier(chart.mesh);
+      const ic::UV_vector small = scale * x;
+      barrier.update(small);
+      pairs.push_back(barrier.number_of_declared_pairs());
+      energy.push_back(barrier.value(small));
+    }
+    EXPECT_EQ(pairs[0], pairs[1]);
+    EXPECT_NEAR(energy[0], energy[1], 1e-9 * energy[0]);
+    // of the n (n - 3) pairs of a vertex and a segment not incident to it
+    const std::size_t n = std::size_t(segments);
+    EXPECT_TRUE(pairs[0] > 0 && 3 * pairs[0] < 2 * n * (n - 3)) << pairs[0] << " pairs of " << n * (n - 3);
+  }
+}
+
+TEST(Injectivity, border_barrier_stops_a_border_before_it_crosses_another)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(4, 16), chart);
+  ic::Border_barrier_term barrier(chart.mesh);
+  barrier.update(chart.x);
+  EXPECT_TRUE(!barrier.has_crossing(chart.x));
+  // push one border vertex straight across the disk: the step is cut where
+  // it would meet the border on the other side
   const auto segments = ic::border_segments(chart.mesh);
   const int v = segments.front()[0];
   ic::UV_vector step = ic::UV_vector::Zero(chart.x.size());
   step.segment<2>(2 * v) = -3. * chart.x.segment<2>(2 * v);
-  EXPECT_TRUE(scaffold.max_step(chart.x, step) < 1.);
+  const double t = barrier.max_step(chart.x, step);
+  ASSERT_TRUE(t > 0. && t < 1.);
+  EXPECT_TRUE(!barrier.has_crossing(chart.x + 0.99 * t * step));
+  EXPECT_TRUE(barrier.has_crossing(chart.x + (std::min)(1., 1.01 * t) * step));
   // a map whose border crosses itself has no finite energy
   ic::UV_vector crossed = chart.x;
   crossed.segment<2>(2 * v) *= -1.5;
-  EXPECT_TRUE(scaffold.has_crossing(crossed));
-  EXPECT_TRUE(std::isinf(scaffold.value(crossed)));
+  EXPECT_TRUE(barrier.has_crossing(crossed));
+  EXPECT_TRUE(std::isinf(barrier.value(crossed)));
+  // the chart crossing itself is the one reported
+  const std::vector<char> charts = barrier.charts_with_crossing(crossed);
+  ASSERT_EQ(charts.size(), std::size_t(1));
+  EXPECT_EQ(charts[0], 1);
 }
 
 TEST(Injectivity, bounding_box_gradient_matches_finite_differences)

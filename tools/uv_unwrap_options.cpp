@@ -212,7 +212,7 @@ bool parse_arguments(int argc, char** argv, Options& options)
 
   const std::string atlas = "Texture atlas";
   app.add_flag("--allow-overlaps", options.allow_overlaps,
-               "let a chart overlap itself (no scaffold; charts still packed apart)")->group(atlas);
+               "let a chart overlap itself (no border barrier; charts still packed apart)")->group(atlas);
   app.add_flag("--world-units", options.world_units,
                "keep UVs in 3D units (charts still packed) instead of [0,1]")->group(atlas);
   app.add_option("--texture-size", options.texture_size,

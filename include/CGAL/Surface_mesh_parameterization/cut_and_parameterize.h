@@ -39,7 +39,7 @@ struct Cut_and_parameterize_timings
   double u_steps = 0.;        ///< Newton minimizations of the UVs inside the alternation
   double v_steps = 0.;        ///< solves of the discontinuity field v
   double cut_extraction = 0.; ///< cut paths from v, and cutting the chart mesh along them
-  double final_solve = 0.;    ///< final solve on the cut mesh, scaffold re-solve included
+  double final_solve = 0.;    ///< final solve on the cut mesh, injective re-solve included
   double packing = 0.;        ///< packing of the charts into the square
   double total = 0.;          ///< the whole call
 };
@@ -276,7 +276,7 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   - `face_discontinuity_map`: output face → double, the field v of the last pass
 ///   - `progress_callback`: `std::function<bool(const Cut_and_parameterize_progress&)>`;
 ///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
-///   - `global_injectivity`: bool, no chart overlaps itself (a scaffold keeps UV
+///   - `global_injectivity`: bool, no chart overlaps itself (a border barrier keeps UV
 ///     borders from crossing, see below); default true
 ///   - `texture_size`: int ≥ 1, texels per side of the texture; default 1024
 ///   - `padding`: double ≥ 0, gap in texels between charts and to the square's
@@ -320,9 +320,10 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///
 /// The result is a texture atlas: the final solve runs from the alternation's
 /// map; if a chart's UV border then crosses itself, that solve is redone from a
-/// Tutte embedding of the cut mesh with a scaffold energy term (a triangulation
-/// of the free space around each chart, rebuilt at every Newton iteration),
-/// which never lets a border cross. The charts are then rotated, scaled by one
+/// Tutte embedding of the cut mesh with a border barrier energy term (each
+/// border vertex is repelled from the border segments of its chart that come
+/// close, and no Newton step goes past the first contact), which never lets a
+/// border cross. The charts are then rotated, scaled by one
 /// common factor (equal texel density, reported in `uv_scale`) and packed into
 /// the unit square. `distortion` is E_d of the map in 3D units (the UVs divided
 /// by `uv_scale`).

@@ -64,7 +64,7 @@ CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut
 CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
 CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
 
-/// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a scaffold (bool, default true).
+/// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a border barrier (bool, default true).
 CGAL_SMP_CUT_NAMED_PARAMETER(global_injectivity_t, global_injectivity)
 /// Atlas: width and height of the texture in texels, sets the padding's scale (int, default 1024).
 CGAL_SMP_CUT_NAMED_PARAMETER(texture_size_t, texture_size)

@@ -17,15 +17,17 @@ namespace cut {
 class Energy_term
 {
 public:
-  /// What update() changed.
-  enum class Update { NONE, VALUES, ELEMENTS };
+  /// What update() changed: nothing, the energy, the Hessian blocks too
+  /// (ELEMENTS), or only new blocks added to those before (MORE_ELEMENTS: the
+  /// solver may keep its fill-reducing ordering).
+  enum class Update { NONE, VALUES, ELEMENTS, MORE_ELEMENTS };
 
   virtual ~Energy_term() = default;
 
   /// Called at the current x before each Newton iteration. A term that
-  /// rebuilds itself there (a scaffold) returns VALUES if its energy changed
-  /// and ELEMENTS if its Hessian blocks changed too (declare_elements() is
-  /// then called again).
+  /// changes itself there (a barrier's close pairs) returns VALUES if its energy changed
+  /// and ELEMENTS or MORE_ELEMENTS if its Hessian blocks changed too
+  /// (declare_elements() is then called again).
   virtual Update update(const UV_vector&) { return Update::NONE; }
 
   /// Declares the Hessian blocks the term writes (called once per sparsity pattern).

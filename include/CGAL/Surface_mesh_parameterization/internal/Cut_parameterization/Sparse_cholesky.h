@@ -7,7 +7,7 @@
 //
 // The fill-reducing ordering of the simplicial solvers is computed here, on
 // the graph of the UV vertices rather than of the unknowns (order()): a
-// scaffold changes the pattern at every Newton iteration, and Eigen's AMD
+// scaffold changed the pattern at every Newton iteration, and Eigen's AMD
 // on all the unknowns cost more than the factorization itself.
 #ifndef CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
 #define CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
@@ -124,20 +124,30 @@ public:
   /// and its midpoint subdivisions (2 cores, one thread), all unknowns vs
   /// vertices: 10k unknowns 20 vs 8 ms (AMD), 20k 57 vs 16 ms, 40k 162 vs
   /// 116 ms (METIS); factorizations within 1%.
-  void analyze(const Sparse_matrix& A, int block_size = 1)
+  ///
+  /// With `keep_ordering`, the simplicial solvers use the ordering of the
+  /// last analysis again (same size): only the symbolic analysis is redone.
+  /// CHOLMOD orders by itself in any case: giving it the matrix ordered by
+  /// METIS on the vertices (natural ordering inside), so that its ordering
+  /// could be kept too, was measured on bimba_i_f10000 x 16 (160k faces)
+  /// and gained nothing: its final solve took 120 s either way.
+  void analyze(const Sparse_matrix& A, int block_size = 1, bool keep_ordering = false)
   {
-    method_ = Method::AMD;
+    if(!(keep_ordering && analyzed_ && method_ != Method::CHOLMOD && permutation_.size() == A.rows()))
+    {
+      method_ = Method::AMD;
 #ifdef CGAL_SMP_CUT_USE_METIS
-    if(A.rows() >= metis_threshold) method_ = Method::METIS;
+      if(A.rows() >= metis_threshold) method_ = Method::METIS;
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-    if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
+      if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
 #endif
-    analyzed_ = true;
+      analyzed_ = true;
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-    if(method_ == Method::CHOLMOD) { cholmod_.analyzePattern(A); return; }
+      if(method_ == Method::CHOLMOD) { cholmod_.analyzePattern(A); return; }
 #endif
-    order(A, block_size);
+      order(A, block_size);
+    }
     permute(A);
     with_simplicial_solver([&](auto& s) { s.analyzePattern(permuted_); });
   }

@@ -48,8 +48,8 @@ struct Joint_settings
   // within 0.001 of tighter settings (better on bimba) with 25-35% fewer iterations.
   double alternation_tolerance = 1e-5; // u-steps inside the alternation
   double final_tolerance = 1e-7;       // final solve on the cut mesh
-  // Final solves with the scaffold or the box: these terms make Newton
-  // converge linearly only (the box's active set, the scaffold's rebuilds),
+  // Final solves with the border barrier or the box: these terms make Newton
+  // converge linearly only (the box's active set, barrier pairs coming close),
   // and 1e-7 took up to 500 iterations (lion_o_f10000, hand1). Measured on 7
   // benchmark meshes against 1e-7: E_d within 0.0015 where the same box
   // stiffness was kept, final solve 2-4x faster.
@@ -98,7 +98,7 @@ struct Joint_timings
   double u_steps = 0.;        // Newton minimizations of the alternation
   double v_steps = 0.;        // discontinuity-field solves
   double cut_extraction = 0.; // extract_cut_paths() and apply_cuts()
-  double final_solve = 0.;    // final_solve(), scaffold re-solve included
+  double final_solve = 0.;    // final_solve(), injective re-solve included
   double packing = 0.;
 };
 
@@ -206,17 +206,18 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 
 /// The final solve on the cut mesh (weights 1), from the map of the
 /// alternation. With global injectivity, if a chart's border then crosses
-/// itself, the solve is redone with the scaffold, which keeps borders from
-/// crossing, from a Tutte embedding (whose border is convex) of each chart
-/// that crossed; the other charts start from where they are. The alternation's
-/// map is no start for the scaffold: its new cuts are slits of zero width,
-/// and a scaffold built in a slit opened just a little holds it almost closed
-/// (measured: venus E_d 4.77 from there, 4.37 from Tutte; hand1 7.5 and 4.58).
+/// itself, the solve is redone with the border barrier, which keeps borders
+/// from crossing, from a Tutte embedding (whose border is convex) of each
+/// chart that crossed; the other charts start from where they are. The
+/// alternation's map is no start for it: its new cuts are slits of zero
+/// width, whose sides touch (with the scaffold used before the barrier, a
+/// slit opened just a little stayed almost closed: venus E_d 4.77 from
+/// there, 4.37 from Tutte; hand1 7.5 and 4.58).
 ///
 /// The bounding box, if any, comes last, from the converged map without it:
 /// pulled by the box from the alternation's map, a chart crossed itself more
-/// often (bunny, tooth), and every crossing costs a scaffold solve from Tutte.
-/// If the box makes a border cross, its solve is redone with the scaffold
+/// often (bunny, tooth), and every crossing costs an injective solve from Tutte.
+/// If the box makes a border cross, its solve is redone with the barrier
 /// from the crossing-free map without box (slits open by then). If the box
 /// raises E_d over the map without it by more than the budget, it is weakened
 /// (stiffness x 0.7) and the solve redone from the boxed map, at most twice,
@@ -239,11 +240,11 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
     state.factorizations += report.factorizations;
     return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   };
-  // from a crossing-free map: without scaffold first (cheaper), with it if a border then crosses
+  // from a crossing-free map: without barrier first (cheaper), with it if a border then crosses
   auto solve_keeping_borders = [&](double stiffness) {
     const UV_vector start = state.x;
     const Error_code status = solve(false, stiffness);
-    if(status != OK || !settings.global_injectivity || !Scaffold_term(state.chart).has_crossing(state.x))
+    if(status != OK || !settings.global_injectivity || !Border_barrier_term(state.chart).has_crossing(state.x))
       return status;
     state.x = start;
     return solve(true, stiffness);
@@ -251,10 +252,10 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
   Error_code status = solve(false, 0.);
   if(status != OK) return status;
   const double unboxed = mean_distortion(state.chart, state.x);
-  bool crossed = false; // a chart crossed itself: every later solve keeps the scaffold
+  bool crossed = false; // a chart crossed itself: every later solve keeps the barrier
   if(settings.global_injectivity)
   {
-    const std::vector<char> crossing = Scaffold_term(state.chart).charts_with_crossing(state.x);
+    const std::vector<char> crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
     if(std::find(crossing.begin(), crossing.end(), 1) != crossing.end())
     {
       // only the charts that overlap themselves start again, from their Tutte map

@@ -3,10 +3,10 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 #define CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scaffold_term.h>
 
 #include <memory>
 
@@ -17,7 +17,7 @@ namespace cut {
 
 /// A distortion solver bound to one chart mesh connectivity: the symbolic
 /// factorization is reused by every call to minimize(); weights may change.
-/// With `injective`, a scaffold keeps every chart free of self-overlap: x
+/// With `injective`, a border barrier keeps every chart free of self-overlap: x
 /// must then have no crossing border when minimize() is called. With a
 /// positive `box_aspect_ratio` and `box_stiffness`, a bounding-box term pulls
 /// each chart into a rectangle of that width / height.
@@ -25,14 +25,14 @@ class Distortion_minimizer
 {
   std::vector<double> weights_;
   Distortion_term term_;
-  std::unique_ptr<Scaffold_term> scaffold_;
+  std::unique_ptr<Border_barrier_term> barrier_;
   std::unique_ptr<Bounding_box_term> box_;
   Projected_newton_solver solver_;
 
   std::vector<Energy_term*> terms()
   {
     std::vector<Energy_term*> t{&term_};
-    if(scaffold_) t.push_back(scaffold_.get());
+    if(barrier_) t.push_back(barrier_.get());
     if(box_) t.push_back(box_.get());
     return t;
   }
@@ -41,7 +41,7 @@ public:
   Distortion_minimizer(const Chart_mesh& mesh, std::vector<double> weights, bool injective = false,
                        double box_aspect_ratio = 0., double box_stiffness = 0.)
     : weights_(std::move(weights)), term_(mesh, weights_),
-      scaffold_(injective ? std::make_unique<Scaffold_term>(mesh) : nullptr),
+      barrier_(injective ? std::make_unique<Border_barrier_term>(mesh) : nullptr),
       box_(box_aspect_ratio > 0. && box_stiffness > 0.
              ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio, box_stiffness) : nullptr),
       solver_(terms(), 2 * mesh.number_of_vertices)

@@ -1,0 +1,481 @@
+// Global injectivity as an energy term: a barrier between the border
+// vertices and the border segments of each chart, after Smith and Schaefer
+// 2015 ("Bijective parameterization with free boundaries"). A disk chart
+// without flipped faces overlaps itself iff its UV border crosses itself,
+// and a border can only start crossing itself where one of its vertices
+// meets one of its segments. So:
+// - the step bound (max_step()) is the first time, along the Newton step,
+//   at which a border vertex meets a border segment of its chart
+//   (continuous collision detection: a quadratic in the step length per
+//   vertex-segment pair, candidates found on a grid of swept boxes);
+// - the energy repels a vertex from a segment closer than a distance ε, so
+//   that the solver is not stopped by that bound: w (ε/d - 1)^2 for d < ε,
+//   zero beyond, with d the distance from the vertex to the segment;
+// - as a last guard, a map whose border meets itself is not admissible
+//   (value() is +infinity).
+// Unlike a scaffold, the term couples only the few vertex-segment pairs
+// that come close: the sparsity pattern of the Hessian stays that of the
+// chart mesh plus these pairs, and changes only when enough new pairs have
+// come within 2ε (see update()). ε follows the UV length of the border where
+// the map squashes it, and is set by update() at each Newton iteration; in
+// between, the energy is a fixed C^1 function of the UVs.
+#ifndef CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
+#define CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// Distance from p to the segment ab; `s` is the parameter of the closest
+/// point a + s (b - a), `n` the unit vector from it to p (zero if d = 0).
+/// The gradient of the distance is n for p, -(1-s) n for a and -s n for b.
+inline double point_segment_distance(const Vector2& p, const Vector2& a, const Vector2& b, double& s, Vector2& n)
+{
+  const Vector2 e = b - a;
+  const double length2 = e.squaredNorm();
+  s = length2 > 0. ? (std::min)(1., (std::max)(0., (p - a).dot(e) / length2)) : 0.;
+  const Vector2 r = p - (a + s * e);
+  const double d = r.norm();
+  n = d > 0. ? Vector2(r / d) : Vector2(0., 0.);
+  return d;
+}
+
+/// First t in [0, 1] at which p + t dp lies on the segment from a + t da to
+/// b + t db; +infinity if none. Conservative near tangency: a root whose
+/// point is within a relative 1e-9 of the segment's ends counts.
+inline double first_contact_time(const Vector2& p, const Vector2& dp, const Vector2& a, const Vector2& da,
+                                 const Vector2& b, const Vector2& db)
+{
+  auto cross = [](const Vector2& u, const Vector2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const Vector2 e = b - a, de = db - da, q = p - a, dq = dp - da;
+  // f(t) = cross(e + t de, q + t dq) = c0 + c1 t + c2 t^2: p on the segment's line
+  const double c0 = cross(e, q), c1 = cross(e, dq) + cross(de, q), c2 = cross(de, dq);
+  double roots[2];
+  int n = 0;
+  const double scale = (std::max)({std::abs(c0), std::abs(c1), std::abs(c2)});
+  if(!(scale > 0.)) // on the segment's line all along: a contact if on the segment at either end
+  {
+    auto on_segment = [&](double t) {
+      const Vector2 et = e + t * de, qt = q + t * dq;
+      const double length2 = et.squaredNorm();
+      const double s = length2 > 0. ? qt.dot(et) / length2 : 0.;
+      return s >= -1e-9 && s <= 1. + 1e-9;
+    };
+    return on_segment(0.) || on_segment(1.) ? 0. : std::numeric_limits<double>::infinity();
+  }
+  if(std::abs(c2) <= 1e-12 * scale)
+  {
+    if(c1 != 0.) roots[n++] = -c0 / c1;
+  }
+  else
+  {
+    const double disc = c1 * c1 - 4. * c2 * c0;
+    if(disc >= 0.)
+    {
+      // stable roots: q = -(c1 + sign(c1) sqrt(disc)) / 2, t = q / c2 and c0 / q
+      const double root = std::sqrt(disc);
+      const double qq = -0.5 * (c1 + (c1 >= 0. ? root : -root));
+      if(c2 != 0.) roots[n++] = qq / c2;
+      if(qq != 0.) roots[n++] = c0 / qq;
+    }
+  }
+  std::sort(roots, roots + n);
+  for(int k = 0; k < n; ++k)
+  {
+    const double t = roots[k];
+    if(!(t >= 0. && t <= 1.)) continue;
+    const Vector2 et = e + t * de, qt = q + t * dq;
+    const double length2 = et.squaredNorm();
+    const double s = length2 > 0. ? qt.dot(et) / length2 : 0.;
+    if(s >= -1e-9 && s <= 1. + 1e-9) return t;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+/// Calls f(i, j) once for each pair of a box of `first` and a box of
+/// `second` that overlap (boxes as {x0, y0, x1, y1}; an empty box, with
+/// x0 > x1, meets nothing), in an order that depends on the boxes only.
+/// Small boxes are matched on a uniform grid, about one cell per box of
+/// `second`; a box spanning more than 64 cells (a long swept box) is tested
+/// against every box of the other set instead, so that the cost stays at
+/// most quadratic.
+template <typename F>
+void for_each_overlapping_box_pair(const std::vector<std::array<double, 4>>& first,
+                                   const std::vector<std::array<double, 4>>& second, F&& f)
+{
+  auto empty = [](const std::array<double, 4>& b) { return !(b[0] <= b[2] && b[1] <= b[3]); };
+  auto overlap = [](const std::array<double, 4>& a, const std::array<double, 4>& b) {
+    return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  double low[2] = {inf, inf}, high[2] = {-inf, -inf};
+  for(const auto* set : {&first, &second})
+    for(const auto& b : *set)
+      if(!empty(b))
+      {
+        low[0] = (std::min)(low[0], b[0]);
+        low[1] = (std::min)(low[1], b[1]);
+        high[0] = (std::max)(high[0], b[2]);
+        high[1] = (std::max)(high[1], b[3]);
+      }
+  if(!(low[0] <= high[0] && low[1] <= high[1])) return;
+  const int cells = (std::max)(1, int(std::ceil(std::sqrt(double(second.size())))));
+  const double size[2] = {(std::max)(high[0] - low[0], 1e-300), (std::max)(high[1] - low[1], 1e-300)};
+  auto cell_of = [&](double value, int axis) {
+    const int c = int((value - low[axis]) / size[axis] * cells);
+    return (std::min)((std::max)(c, 0), cells - 1);
+  };
+  constexpr long max_cells = 64;
+  // cell range {x0, y0, x1, y1}; empty for an empty or a large box
+  auto range = [&](const std::array<double, 4>& b, bool& large) {
+    large = false;
+    if(empty(b)) return std::array<int, 4>{1, 1, 0, 0};
+    const std::array<int, 4> r{cell_of(b[0], 0), cell_of(b[1], 1), cell_of(b[2], 0), cell_of(b[3], 1)};
+    large = long(r[2] - r[0] + 1) * long(r[3] - r[1] + 1) > max_cells;
+    return large ? std::array<int, 4>{1, 1, 0, 0} : r;
+  };
+  std::vector<std::array<int, 4>> second_range(second.size());
+  std::vector<int> large_second;
+  std::vector<int> count(std::size_t(cells) * cells + 1, 0);
+  for(std::size_t j = 0; j < second.size(); ++j)
+  {
+    bool large;
+    second_range[j] = range(second[j], large);
+    if(large) large_second.push_back(int(j));
+    const auto& r = second_range[j];
+    for(int cy = r[1]; cy <= r[3]; ++cy)
+      for(int cx = r[0]; cx <= r[2]; ++cx) ++count[std::size_t(cy) * cells + cx + 1];
+  }
+  for(std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+  std::vector<int> bucket(count.back()), fill(count.begin(), count.end() - 1);
+  for(std::size_t j = 0; j < second.size(); ++j)
+  {
+    const auto& r = second_range[j];
+    for(int cy = r[1]; cy <= r[3]; ++cy)
+      for(int cx = r[0]; cx <= r[2]; ++cx) bucket[fill[std::size_t(cy) * cells + cx]++] = int(j);
+  }
+  for(std::size_t i = 0; i < first.size(); ++i)
+  {
+    const auto& a = first[i];
+    bool large;
+    const std::array<int, 4> r = range(a, large);
+    if(large)
+    {
+      for(std::size_t j = 0; j < second.size(); ++j)
+        if(overlap(a, second[j])) f(int(i), int(j));
+      continue;
+    }
+    for(int cy = r[1]; cy <= r[3]; ++cy)
+      for(int cx = r[0]; cx <= r[2]; ++cx)
+      {
+        const std::size_t c = std::size_t(cy) * cells + cx;
+        for(int k = count[c]; k < count[c + 1]; ++k)
+        {
+          const int j = bucket[k];
+          const auto& rj = second_range[j];
+          // each pair once: in the first cell both ranges share
+          if((std::max)(r[0], rj[0]) != cx || (std::max)(r[1], rj[1]) != cy) continue;
+          if(overlap(a, second[j])) f(int(i), j);
+        }
+      }
+    if(!empty(a))
+      for(int j : large_second)
+        if(overlap(a, second[j])) f(int(i), j);
+  }
+}
+
+class Border_barrier_term : public Energy_term
+{
+  std::vector<std::array<int, 2>> segments_; // UV border, per chart
+  std::vector<int> segment_chart_;
+  std::vector<int> points_;                  // UV vertices on the border
+  std::vector<int> point_chart_;
+  std::vector<int> point_of_;                // per UV vertex: its index in points_, or -1
+  int number_of_charts_ = 0;
+  double epsilon_ = 0.;                      // barrier distance where the border is not squashed
+  double weight_ = 0.;                       // energy of one pair at distance ε/2
+  std::vector<double> segment_epsilon_;      // ε of each segment, set by update()
+  std::vector<double> point_epsilon_;        // ε of each border vertex, set by update()
+
+  std::vector<std::array<int, 2>> pairs_;          // declared (vertex, segment) pairs
+  std::unordered_map<std::uint64_t, int> pair_of_; // key (vertex, segment) -> index in pairs_
+  std::vector<int> elements_;                      // per declared pair
+  std::vector<int> point_elements_;                // per border vertex: its 2x2 diagonal block
+  int iterations_since_pattern_ = 0;
+
+  /// A segment shorter in UV than this fraction of the mean 3D border
+  /// length (squashed by the map) has an ε in proportion to its UV length.
+  static constexpr double squashed = 0.1;
+  /// Close pairs not in the pattern (their Hessian is approximated by its
+  /// diagonal blocks) are added to it once they are this fraction of the
+  /// declared ones, or after this many Newton iterations.
+  static constexpr double pattern_growth = 1. / 16.;
+  static constexpr int pattern_delay = 4;
+
+  Vector2 point(const UV_vector& x, int v) const { return Vector2(x[2*v], x[2*v+1]); }
+
+  /// Barrier distance of the pair (border vertex v, segment j).
+  double epsilon(int v, int j) const { return (std::min)(point_epsilon_[point_of_[v]], segment_epsilon_[j]); }
+
+  /// Barrier b(d) at distance ε and its first two derivatives.
+  void barrier(double d, double epsilon, double& b, double& db, double& ddb) const
+  {
+    if(!(d < epsilon)) { b = db = ddb = 0.; return; }
+    const double r = epsilon / d;
+    b = weight_ * (r - 1.) * (r - 1.);
+    db = -2. * weight_ * (r - 1.) * r / d;
+    ddb = 2. * weight_ * (r * r + 2. * (r - 1.) * r) / (d * d);
+  }
+
+  /// Calls f(v, segment) for each border vertex v and segment of its chart,
+  /// not incident to v, whose boxes meet, in an order that depends on the
+  /// positions only. The boxes hold each vertex at x and at x + dx (dx may
+  /// be null: x only); a vertex's box is grown by `factor` times its ε.
+  template <typename F>
+  void for_each_candidate_pair(const UV_vector& x, const UV_vector* dx, double factor, F&& f) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    auto box_of = [&](std::initializer_list<int> vertices, double grow) {
+      std::array<double, 4> box{inf, inf, -inf, -inf};
+      for(int v : vertices)
+        for(int end = 0; end < (dx ? 2 : 1); ++end)
+        {
+          const Vector2 p = end == 0 ? point(x, v) : Vector2(point(x, v) + point(*dx, v));
+          box = {(std::min)(box[0], p.x() - grow), (std::min)(box[1], p.y() - grow),
+                 (std::max)(box[2], p.x() + grow), (std::max)(box[3], p.y() + grow)};
+        }
+      return box;
+    };
+    std::vector<std::array<double, 4>> point_boxes(points_.size()), segment_boxes(segments_.size());
+    for(std::size_t i = 0; i < points_.size(); ++i) point_boxes[i] = box_of({points_[i]}, factor * point_epsilon_[i]);
+    for(std::size_t j = 0; j < segments_.size(); ++j) segment_boxes[j] = box_of({segments_[j][0], segments_[j][1]}, 0.);
+    for_each_overlapping_box_pair(point_boxes, segment_boxes, [&](int i, int j) {
+      const int v = points_[i];
+      const auto& seg = segments_[j];
+      if(point_chart_[i] == segment_chart_[j] && v != seg[0] && v != seg[1]) f(v, j);
+    });
+  }
+
+  /// Calls f(v, segment, d, ε, s, n) for each pair of for_each_candidate_pair()
+  /// closer than factor ε at x (point_segment_distance() gives d, s, n).
+  template <typename F>
+  void for_each_close_pair(const UV_vector& x, F&& f, double factor = 1.) const
+  {
+    for_each_candidate_pair(x, nullptr, factor, [&](int v, int j) {
+      const auto& seg = segments_[j];
+      const double epsilon = this->epsilon(v, j);
+      double s;
+      Vector2 n;
+      const double d = point_segment_distance(point(x, v), point(x, seg[0]), point(x, seg[1]), s, n);
+      if(d < factor * epsilon) f(v, j, d, epsilon, s, n);
+    });
+  }
+
+public:
+  /// `relative_distance`: ε relative to the mean 3D length of the border
+  /// edges (lowered where the map squashes the border, see update());
+  /// `relative_weight`: energy of a pair at ε/2 relative to the mean
+  /// face area of the chart mesh.
+  explicit Border_barrier_term(const Chart_mesh& mesh, double relative_distance = 0.25, double relative_weight = 1.)
+  {
+    // border edges with their 3D length
+    std::unordered_map<std::uint64_t, int> directed;
+    directed.reserve(3 * mesh.faces.size());
+    for(const auto& t : mesh.faces)
+      for(int k = 0; k < 3; ++k) directed.emplace(directed_edge_key(t[k], t[(k+1)%3]), 0);
+    const std::vector<int> chart = chart_of_faces(mesh, number_of_charts_);
+    std::vector<int> chart_of_point(mesh.number_of_vertices, -1);
+    for(std::size_t f = 0; f < mesh.faces.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int a = mesh.faces[f][k], b = mesh.faces[f][(k+1)%3];
+        if(directed.count(directed_edge_key(b, a))) continue;
+        segments_.push_back({a, b});
+        segment_chart_.push_back(chart[f]);
+        epsilon_ += mesh.edge_length(f, k);
+        chart_of_point[a] = chart_of_point[b] = chart[f];
+      }
+    point_of_.assign(mesh.number_of_vertices, -1);
+    for(int v = 0; v < mesh.number_of_vertices; ++v)
+      if(chart_of_point[v] >= 0)
+      {
+        point_of_[v] = int(points_.size());
+        points_.push_back(v);
+        point_chart_.push_back(chart_of_point[v]);
+      }
+    epsilon_ = segments_.empty() ? 0. : relative_distance * epsilon_ / double(segments_.size());
+    segment_epsilon_.assign(segments_.size(), 0.);
+    point_epsilon_.assign(points_.size(), 0.);
+    weight_ = relative_weight * mesh.total_area() / double((std::max)(std::size_t(1), mesh.number_of_faces()));
+  }
+
+  /// ε where the border is not squashed.
+  double epsilon() const { return epsilon_; }
+
+  /// True if two segments of some chart's border that share no vertex meet
+  /// at x (cross, touch or overlap).
+  bool has_crossing(const UV_vector& x) const
+  {
+    return count_border_crossings(segments_, x, &segment_chart_, 1, true) > 0;
+  }
+
+  /// Per chart (ids of chart_of_faces()): true if its border meets itself at x.
+  std::vector<char> charts_with_crossing(const UV_vector& x) const
+  {
+    std::vector<char> crossing(number_of_charts_, 0);
+    std::vector<std::vector<std::array<int, 2>>> segments(number_of_charts_);
+    for(std::size_t i = 0; i < segments_.size(); ++i) segments[segment_chart_[i]].push_back(segments_[i]);
+    for(int c = 0; c < number_of_charts_; ++c)
+      crossing[c] = count_border_crossings(segments[c], x, nullptr, 1, true) > 0;
+    return crossing;
+  }
+
+  /// Sets ε at x, then the pattern: the pairs closer than 2ε.
+  ///
+  /// ε is epsilon_ for a segment whose UV length is at least `squashed`
+  /// times the mean 3D border length, and in proportion to its UV length
+  /// below (a Tutte map squashes the borders of holes almost flat: with one
+  /// ε, all their vertices would be pairs with one another); a vertex has
+  /// the lesser ε of its segments, a pair the lesser of its vertex's and
+  /// segment's. The energy changes with ε: VALUES.
+  ///
+  /// Pairs closer than ε that are not in the pattern count on their own
+  /// diagonal blocks only (still a descent direction) until they are many
+  /// enough, or have waited long enough, to be worth a new pattern
+  /// (measured on CGAL's cheese.off, whose holes give thousands of pairs:
+  /// a pattern per Newton iteration was most of the time). A new pattern
+  /// adds the pairs now closer than 2ε to those declared (MORE_ELEMENTS: the
+  /// solver may keep its ordering), or declares only them (ELEMENTS) when
+  /// most of the declared ones have gone away.
+  Update update(const UV_vector& x) override
+  {
+    const double squashed_length = squashed * epsilon_;
+    std::fill(point_epsilon_.begin(), point_epsilon_.end(), std::numeric_limits<double>::infinity());
+    for(std::size_t j = 0; j < segments_.size(); ++j)
+    {
+      const int a = segments_[j][0], b = segments_[j][1];
+      const double length = (point(x, b) - point(x, a)).norm();
+      segment_epsilon_[j] = length < squashed_length ? epsilon_ * length / squashed_length : epsilon_;
+      for(int v : {a, b})
+        point_epsilon_[point_of_[v]] = (std::min)(point_epsilon_[point_of_[v]], segment_epsilon_[j]);
+    }
+    ++iterations_since_pattern_;
+    std::vector<std::array<int, 2>> found;
+    std::size_t fresh = 0; // closer than ε, not declared
+    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double, const Vector2&) {
+      found.push_back({v, j});
+      if(d < epsilon && !pair_of_.count(directed_edge_key(v, j))) ++fresh;
+    }, 2.);
+    if(fresh == 0 || (double(fresh) < pattern_growth * double(pairs_.size())
+                      && iterations_since_pattern_ < pattern_delay))
+      return Update::VALUES;
+    iterations_since_pattern_ = 0;
+    std::size_t kept = 0;
+    for(const auto& pair : found) kept += pair_of_.count(directed_edge_key(pair[0], pair[1]));
+    const bool renew = 2 * kept < pairs_.size();
+    if(renew)
+    {
+      pairs_.clear();
+      pair_of_.clear();
+    }
+    for(const auto& pair : found)
+      if(pair_of_.emplace(directed_edge_key(pair[0], pair[1]), int(pairs_.size())).second) pairs_.push_back(pair);
+    return renew ? Update::ELEMENTS : Update::MORE_ELEMENTS;
+  }
+
+  std::size_t number_of_declared_pairs() const { return pairs_.size(); }
+
+  /// Pairs closer than their ε at x that are not in the pattern.
+  std::size_t number_of_undeclared_close_pairs(const UV_vector& x) const
+  {
+    std::size_t n = 0;
+    for_each_close_pair(x, [&](int v, int j, double, double, double, const Vector2&) {
+      n += pair_of_.count(directed_edge_key(v, j)) == 0;
+    });
+    return n;
+  }
+
+  void declare_elements(Hessian_assembler& hessian) override
+  {
+    point_elements_.clear();
+    for(int v : points_) point_elements_.push_back(hessian.add_element({2*v, 2*v+1}));
+    elements_.clear();
+    for(const auto& pair : pairs_)
+    {
+      const int v = pair[0], a = segments_[pair[1]][0], b = segments_[pair[1]][1];
+      elements_.push_back(hessian.add_element({2*v, 2*v+1, 2*a, 2*a+1, 2*b, 2*b+1}));
+    }
+  }
+
+  double value(const UV_vector& x) const override
+  {
+    if(has_crossing(x)) return std::numeric_limits<double>::infinity();
+    double energy = 0.;
+    for_each_close_pair(x, [&](int, int, double d, double epsilon, double, const Vector2&) {
+      double b, db, ddb;
+      barrier(d, epsilon, b, db, ddb);
+      energy += b;
+    });
+    return energy;
+  }
+
+  /// Per pair closer than ε: the gradient b'(d) g and the Hessian
+  /// approximation b''(d) g g^T (positive semi-definite), g being the
+  /// gradient of d over the pair's three vertices; for a pair not in the
+  /// pattern, the 2x2 diagonal blocks of that matrix.
+  void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
+                                Hessian_assembler& hessian) const override
+  {
+    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
+      double b, db, ddb;
+      barrier(d, epsilon, b, db, ddb);
+      Eigen::Matrix<double, 6, 1> g;
+      g << n, -(1. - s) * n, -s * n;
+      const int ids[3] = {v, segments_[j][0], segments_[j][1]};
+      for(int c = 0; c < 3; ++c)
+      {
+        gradient[2*ids[c]] += db * g[2*c];
+        gradient[2*ids[c]+1] += db * g[2*c+1];
+      }
+      const Eigen::Matrix<double, 6, 6> block = ddb * g * g.transpose();
+      const auto it = pair_of_.find(directed_edge_key(v, j));
+      if(it != pair_of_.end())
+        hessian.add(elements_[it->second], block);
+      else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
+        for(int c = 0; c < 3; ++c)
+          hessian.add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));
+    });
+  }
+
+  double max_step(const UV_vector& x, const UV_vector& dx) const override
+  {
+    // boxes swept over the step t in [0, 1]
+    double t = std::numeric_limits<double>::infinity();
+    for_each_candidate_pair(x, &dx, 0., [&](int v, int j) {
+      const auto& s = segments_[j];
+      t = (std::min)(t, first_contact_time(point(x, v), point(dx, v), point(x, s[0]), point(dx, s[0]),
+                                           point(x, s[1]), point(dx, s[1])));
+    });
+    return t;
+  }
+};
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
