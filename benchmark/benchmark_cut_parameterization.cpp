@@ -12,12 +12,14 @@
 #include "options.h"
 #include "scaling.h"
 
-#include "blas_threads.h" // tools/
+#include "blas_threads.h"    // tools/
+#include "malloc_settings.h" // tools/
 
 int main(int argc, char** argv)
 {
   cut_benchmark::Options opt;
   if(const int r = cut_benchmark::parse_options(argc, argv, opt)) return r == 1 ? 0 : r;
   cut_tools::use_one_blas_thread();
+  cut_tools::keep_freed_memory();
   return opt.scaling ? cut_benchmark::run_scaling(opt) : cut_benchmark::run_comparison(opt);
 }

@@ -424,6 +424,45 @@ TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
 }
 
 
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+TEST(TutteAndOptimizer, cholmod_runs_its_openmp_regions_serially)
+{
+  // A system of CHOLMOD's size (a grid Laplacian plus identity) is solved,
+  // with OpenMP regions kept on the calling thread meanwhile; the thread's
+  // own setting is given back after.
+  if(omp_get_max_active_levels == nullptr || omp_set_max_active_levels == nullptr)
+    GTEST_SKIP() << "no OpenMP runtime in this process";
+  const int before = omp_get_max_active_levels();
+  omp_set_max_active_levels(2);
+  {
+    ic::Serial_openmp_scope serial;
+    EXPECT_EQ(omp_get_max_active_levels(), 0);
+  }
+  EXPECT_EQ(omp_get_max_active_levels(), 2);
+  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold)))) + 1, n = side * side;
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j)
+    {
+      const int k = i * side + j;
+      triplets.emplace_back(k, k, 5.);
+      if(i > 0) triplets.emplace_back(k, k - side, -1.);
+      if(j > 0) triplets.emplace_back(k, k - 1, -1.);
+    }
+  ic::Sparse_matrix A(n, n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::VectorXd b(n), x;
+  for(int k = 0; k < n; ++k) b[k] = std::sin(0.07 * k);
+  ic::Sparse_cholesky cholesky;
+  cholesky.analyze(A, 1);
+  ASSERT_TRUE(cholesky.factorize(A) && cholesky.solve(b, x));
+  const Eigen::VectorXd residual = A.selfadjointView<Eigen::Lower>() * x - b;
+  EXPECT_TRUE(residual.norm() <= 1e-12 * b.norm()) << "relative residual " << residual.norm() / b.norm();
+  EXPECT_EQ(omp_get_max_active_levels(), 2);
+  omp_set_max_active_levels(before);
+}
+#endif
+
 TEST(TutteAndOptimizer, sparse_cholesky_block_ordering)
 {
   // two unknowns per grid node coupled as the (u, v) of a UV vertex, below

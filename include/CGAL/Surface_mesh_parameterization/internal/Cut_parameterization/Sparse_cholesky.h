@@ -18,6 +18,12 @@
 #include <vector>
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#if defined(__GNUC__) && defined(__ELF__)
+// OpenMP's control of the calling thread, if the process has an OpenMP
+// runtime (Debian's CHOLMOD brings libgomp; weak references: null otherwise)
+extern "C" int omp_get_max_active_levels(void) __attribute__((weak));
+extern "C" void omp_set_max_active_levels(int) __attribute__((weak));
+#endif
 #endif
 #ifdef CGAL_SMP_CUT_USE_METIS
 #include <iostream> // Eigen's MetisSupport uses std::cerr without including it
@@ -30,6 +36,43 @@ namespace internal {
 namespace cut {
 
 using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+/// While alive, OpenMP parallel regions started by the calling thread run on
+/// that thread alone (no active level allowed); the setting before is
+/// restored after. Debian's CHOLMOD opens a parallel region with a fixed 4
+/// threads (CHOLMOD_OMP_NUM_THREADS, whatever OMP_NUM_THREADS says) for small
+/// loops inside each supernode: tens of thousands of regions per
+/// factorization, whose threads sleep and wake on futexes. On bimba_i_f10000
+/// refined to 160k faces (2 cores) that made 2.8 million context switches
+/// and a third of the run in the kernel: 95 s, against 63-67 s serial
+/// (OMP_THREAD_LIMIT=2: 70 s). The setting is an ICV of the calling thread
+/// (OpenMP 5), so other threads keep theirs.
+class Serial_openmp_scope
+{
+  int saved_ = -1;
+
+public:
+  Serial_openmp_scope()
+  {
+#if defined(__GNUC__) && defined(__ELF__)
+    if(omp_get_max_active_levels != nullptr && omp_set_max_active_levels != nullptr)
+    {
+      saved_ = omp_get_max_active_levels();
+      omp_set_max_active_levels(0);
+    }
+#endif
+  }
+  ~Serial_openmp_scope()
+  {
+#if defined(__GNUC__) && defined(__ELF__)
+    if(saved_ >= 0) omp_set_max_active_levels(saved_);
+#endif
+  }
+  Serial_openmp_scope(const Serial_openmp_scope&) = delete;
+  Serial_openmp_scope& operator=(const Serial_openmp_scope&) = delete;
+};
+#endif
 
 class Sparse_cholesky
 {
@@ -144,7 +187,12 @@ public:
 #endif
       analyzed_ = true;
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-      if(method_ == Method::CHOLMOD) { cholmod_.analyzePattern(A); return; }
+      if(method_ == Method::CHOLMOD)
+      {
+        Serial_openmp_scope serial;
+        cholmod_.analyzePattern(A);
+        return;
+      }
 #endif
       order(A, block_size);
     }
@@ -157,7 +205,12 @@ public:
   {
     if(!analyzed_) analyze(A);
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-    if(method_ == Method::CHOLMOD) { cholmod_.factorize(A); return cholmod_.info() == Eigen::Success; }
+    if(method_ == Method::CHOLMOD)
+    {
+      Serial_openmp_scope serial;
+      cholmod_.factorize(A);
+      return cholmod_.info() == Eigen::Success;
+    }
 #endif
     permute(A);
     return with_simplicial_solver([&](auto& s) { s.factorize(permuted_); return s.info() == Eigen::Success; });
@@ -169,6 +222,7 @@ public:
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
     if(method_ == Method::CHOLMOD)
     {
+      Serial_openmp_scope serial;
       x = cholmod_.solve(b);
       return cholmod_.info() == Eigen::Success && x.allFinite();
     }
