@@ -64,6 +64,24 @@ auto vertex_uv_map(const Mesh& mesh)
   return get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
 }
 
+/// The lower triangle of a grid Laplacian over side x side nodes with
+/// `diagonal` on its diagonal (positive definite when diagonal > 4).
+ic::Sparse_matrix screened_grid_laplacian(int side, double diagonal)
+{
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j)
+    {
+      const int k = i * side + j;
+      triplets.emplace_back(k, k, diagonal);
+      if(i > 0) triplets.emplace_back(k, k - side, -1.);
+      if(j > 0) triplets.emplace_back(k, k - 1, -1.);
+    }
+  ic::Sparse_matrix A(side * side, side * side);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
 } // namespace
 
 template <typename Mesh>
@@ -393,17 +411,7 @@ TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
   {
     SCOPED_TRACE("grid side " + std::to_string(side));
     const int n = side * side;
-    std::vector<Eigen::Triplet<double>> triplets;
-    for(int i = 0; i < side; ++i)
-      for(int j = 0; j < side; ++j)
-      {
-        const int k = i * side + j;
-        triplets.emplace_back(k, k, 4.001);
-        if(i > 0) triplets.emplace_back(k, k - side, -1.);
-        if(j > 0) triplets.emplace_back(k, k - 1, -1.);
-      }
-    ic::Sparse_matrix A(n, n);
-    A.setFromTriplets(triplets.begin(), triplets.end()); // lower triangle only
+    const ic::Sparse_matrix A = screened_grid_laplacian(side, 4.001); // lower triangle only
     Eigen::VectorXd b(n);
     for(int k = 0; k < n; ++k) b[k] = std::sin(0.37 * k) + 0.1 * (k % 7);
     ic::Sparse_cholesky solver;
@@ -440,17 +448,7 @@ TEST(TutteAndOptimizer, cholmod_runs_its_openmp_regions_serially)
   }
   EXPECT_EQ(omp_get_max_active_levels(), 2);
   const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold)))) + 1, n = side * side;
-  std::vector<Eigen::Triplet<double>> triplets;
-  for(int i = 0; i < side; ++i)
-    for(int j = 0; j < side; ++j)
-    {
-      const int k = i * side + j;
-      triplets.emplace_back(k, k, 5.);
-      if(i > 0) triplets.emplace_back(k, k - side, -1.);
-      if(j > 0) triplets.emplace_back(k, k - 1, -1.);
-    }
-  ic::Sparse_matrix A(n, n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
+  const ic::Sparse_matrix A = screened_grid_laplacian(side, 5.);
   Eigen::VectorXd b(n), x;
   for(int k = 0; k < n; ++k) b[k] = std::sin(0.07 * k);
   ic::Sparse_cholesky cholesky;

@@ -350,7 +350,8 @@ public:
   /// below (a Tutte map squashes the borders of holes almost flat: with one
   /// ε, all their vertices would be pairs with one another); a vertex has
   /// the lesser ε of its segments, a pair the lesser of its vertex's and
-  /// segment's. The energy changes with ε: VALUES.
+  /// segment's. If an ε changed, so did the energy: VALUES (else NONE, and
+  /// the solver keeps the energy it has).
   ///
   /// Pairs closer than ε that are not in the pattern count on their own
   /// diagonal blocks only (still a descent direction) until they are many
@@ -363,12 +364,15 @@ public:
   Update update(const UV_vector& x) override
   {
     const double squashed_length = squashed * epsilon_;
+    bool changed = false;
     std::fill(point_epsilon_.begin(), point_epsilon_.end(), std::numeric_limits<double>::infinity());
     for(std::size_t j = 0; j < segments_.size(); ++j)
     {
       const int a = segments_[j][0], b = segments_[j][1];
       const double length = (point(x, b) - point(x, a)).norm();
-      segment_epsilon_[j] = length < squashed_length ? epsilon_ * length / squashed_length : epsilon_;
+      const double epsilon = length < squashed_length ? epsilon_ * length / squashed_length : epsilon_;
+      changed = changed || epsilon != segment_epsilon_[j];
+      segment_epsilon_[j] = epsilon;
       for(int v : {a, b})
         point_epsilon_[point_of_[v]] = (std::min)(point_epsilon_[point_of_[v]], segment_epsilon_[j]);
     }
@@ -381,7 +385,7 @@ public:
     }, 2.);
     if(fresh == 0 || (double(fresh) < pattern_growth * double(pairs_.size())
                       && iterations_since_pattern_ < pattern_delay))
-      return Update::VALUES;
+      return changed ? Update::VALUES : Update::NONE;
     iterations_since_pattern_ = 0;
     std::size_t kept = 0;
     for(const auto& pair : found) kept += pair_of_.count(directed_edge_key(pair[0], pair[1]));
