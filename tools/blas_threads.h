@@ -1,6 +1,6 @@
 // One BLAS thread for the programs of the project (uv_unwrap, the benchmark).
 //
-// From 100,000 unknowns the Newton systems are factored by CHOLMOD, whose
+// From 8,000 unknowns the Newton systems are factored by CHOLMOD, whose
 // dense blocks go through BLAS (Debian: OpenBLAS). OpenBLAS's own threads
 // then compete with TBB's (assembly) and keep spinning between calls: on
 // bimba_i_f10000 refined to 160k faces (2 cores), a profile of the final solve

@@ -154,11 +154,15 @@ public:
   static constexpr Eigen::Index metis_threshold = 30000;
 
   /// Unknowns from which CHOLMOD's supernodal factorization takes over (if
-  /// built with it). A matrix of the Hessian's pattern on the same meshes,
-  /// METIS-ordered simplicial LLT vs CHOLMOD with OpenBLAS (2 cores), analysis
-  /// + factorization: 40k unknowns 0.14 + 0.11 vs 0.02 + 0.18 s, 160k
-  /// 0.84 + 0.86 vs 0.11 + 0.88 s, 640k 4.3 + 11.1 vs 3.9 + 3.7 s.
-  static constexpr Eigen::Index cholmod_threshold = 100000;
+  /// built with it). A matrix of the Hessian's pattern on benchmark meshes and
+  /// on bimba_i_f10000 refined to 40k faces, one factorization, Eigen's
+  /// AMD-ordered simplicial LDLT vs CHOLMOD supernodal with OpenBLAS (one
+  /// thread, OpenMP regions kept serial, 2 cores): 700 unknowns 0.17 vs
+  /// 0.45 ms, 3.9k 2.5 vs 2.7 ms, 5k 3.9 vs 3.8 ms, 10k 14 vs 9.1 ms, 20k 40
+  /// vs 19 ms, 40k 166 vs 58 ms (METIS-ordered simplicial LLT: 93 ms); at
+  /// 160k 1.3 s (METIS) vs 0.88 s, at 640k 11.1 vs 3.7 s. The 15 benchmark
+  /// meshes: same E_d and E_s, geometric-mean speedup 2.20x -> 2.57x.
+  static constexpr Eigen::Index cholmod_threshold = 8000;
 
   /// Symbolic analysis; call again only when the pattern changes.
   /// `block_size`: see order(). Ordering the 2 unknowns of each UV vertex
