@@ -403,11 +403,13 @@ TYPED_TEST(TutteAndOptimizerTyped, vertex_point_map_is_used)
 
 TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
 {
-  // a screened grid Laplacian just above and below metis_threshold: the
-  // solver (METIS-ordered LLT above the threshold when built with METIS,
-  // AMD-ordered LDLT otherwise) gives the solution of Eigen's AMD LDLT, with a
-  // tiny residual, and refactors a matrix of the same pattern
-  for(const int side : {120, int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::metis_threshold)))) + 1})
+  // a screened grid Laplacian below cholmod_threshold (AMD-ordered LDLT) and
+  // just above metis_threshold (CHOLMOD when built with it, else METIS-ordered
+  // LLT when built with METIS, else AMD): the solver gives the solution of
+  // Eigen's AMD LDLT, with a tiny residual, and refactors a matrix of the
+  // same pattern
+  for(const int side : {int(std::sqrt(0.9 * double(ic::Sparse_cholesky::cholmod_threshold))),
+                        int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::metis_threshold)))) + 1})
   {
     SCOPED_TRACE("grid side " + std::to_string(side));
     const int n = side * side;

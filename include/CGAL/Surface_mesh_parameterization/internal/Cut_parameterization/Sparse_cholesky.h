@@ -150,7 +150,8 @@ public:
   /// of the distortion Hessian on bimba_i_f10000 and its midpoint subdivisions,
   /// AMD-ordered LDLT vs METIS-ordered LLT (2 cores, one thread): 10k unknowns
   /// 18 vs 18 ms, 20k 54 vs 42 ms, 40k 193 vs 93 ms, 160k 3.5 vs 1.3 s; the
-  /// ordering costs METIS 10-70% more.
+  /// ordering costs METIS 10-70% more. Built with CHOLMOD too, these
+  /// systems go to CHOLMOD (cholmod_threshold is lower).
   static constexpr Eigen::Index metis_threshold = 30000;
 
   /// Unknowns from which CHOLMOD's supernodal factorization takes over (if

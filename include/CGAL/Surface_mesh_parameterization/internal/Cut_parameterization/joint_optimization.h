@@ -110,7 +110,6 @@ struct Joint_state
   Chart_mesh chart;
   std::vector<int> corner_uv;    // per surface corner
   UV_vector x;
-  bool tutte_map = false;        // x is the Tutte map of `chart` (nothing minimized since)
   Eigen::VectorXd v;             // per face
   std::size_t newton_iterations = 0;
   std::size_t factorizations = 0;   // numeric Cholesky factorizations of the Newton solves
@@ -170,7 +169,6 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 {
   const std::size_t nf = surface.number_of_faces();
   const double mean_edge = mean_edge_length(surface);
-  state.tutte_map = false;
   Scoped_timer u_setup(state.timings.u_steps);
   Distortion_minimizer minimizer(state.chart, std::vector<double>(nf, 1.));
   u_setup.stop();
@@ -216,7 +214,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 /// slit opened just a little stayed almost closed: venus E_d 4.77 from
 /// there, 4.37 from Tutte; hand1 7.5 and 4.58).
 ///
-/// From a Tutte map (`state.tutte_map`: the multiresolution path, where the
+/// From a Tutte map (`from_tutte_map`: the multiresolution path, where the
 /// alternation ran on the simplified copy, or no pass at all) the barrier is
 /// on from the first solve: the solve without it would only find out
 /// whether a border crosses, then start again from the same map. Measured
@@ -235,7 +233,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
 /// raises E_d over the map without it by more than the budget, it is weakened
 /// (stiffness x 0.7) and the solve redone from the boxed map, at most twice,
 /// then dropped.
-inline Error_code final_solve(const Joint_settings& settings, Joint_state& state)
+inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_map, Joint_state& state)
 {
   const std::vector<double> ones(state.chart.number_of_faces(), 1.);
   double stiffness = settings.bounding_box_aspect_ratio > 0. ? settings.bounding_box_stiffness : 0.;
@@ -262,12 +260,11 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
     state.x = start;
     return solve(true, stiffness);
   };
-  const bool barrier_first = settings.global_injectivity && state.tutte_map;
-  state.tutte_map = false;
+  const bool barrier_first = settings.global_injectivity && from_tutte_map;
   Error_code status = solve(barrier_first, 0.);
   if(status != OK) return status;
   const double unboxed = mean_distortion(state.chart, state.x);
-  bool crossed = barrier_first; // the barrier is on: every later solve keeps it
+  bool barrier = barrier_first; // once on, every later solve keeps the barrier
   if(barrier_first && stiffness > 0.) status = solve(true, stiffness);
   if(settings.global_injectivity && !barrier_first)
   {
@@ -285,18 +282,18 @@ inline Error_code final_solve(const Joint_settings& settings, Joint_state& state
       for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
         if(crossing[chart_of_face[f]])
           for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
-      crossed = true;
+      barrier = true;
       status = solve(true, stiffness);
     }
   }
-  if(!crossed && stiffness > 0.) status = solve_keeping_borders(stiffness);
+  if(!barrier && stiffness > 0.) status = solve_keeping_borders(stiffness);
   // the box's cost in distortion, over the map without box, stays within the budget
   for(int weaker = 0; status == OK && stiffness > 0. && weaker < 3
                       && mean_distortion(state.chart, state.x) > unboxed + settings.bounding_box_distortion_budget;
       ++weaker)
   {
     stiffness = weaker < 2 ? 0.7 * stiffness : 0.;
-    status = crossed ? solve(true, stiffness) : solve_keeping_borders(stiffness);
+    status = barrier ? solve(true, stiffness) : solve_keeping_borders(stiffness);
   }
   return status;
 }
@@ -313,7 +310,6 @@ Error_code initial_map(const Surface& surface, Joint_state& state)
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
   if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
-  state.tutte_map = true;
   return OK;
 }
 
@@ -417,7 +413,8 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   if(status != OK) return status;
 
   Scoped_timer final_timer(state.timings.final_solve);
-  const Error_code final_status = final_solve(settings, state);
+  // the map is still the Tutte map where no alternation ran on this mesh
+  const Error_code final_status = final_solve(settings, coarse || settings.passes == 0, state);
   if(final_status != OK) return final_status;
   state.distortion = mean_distortion(state.chart, state.x);
   final_timer.stop();
