@@ -434,6 +434,39 @@ TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
 }
 
 
+TEST(TutteAndOptimizer, sparse_cholesky_reads_the_lower_triangle_of_any_storage)
+{
+  // Above cholmod_threshold (CHOLMOD permutes the matrix itself, value by
+  // value): a matrix stored whole (both triangles, the upper one spoiled so
+  // that reading it would show) and one left uncompressed give the solution
+  // of the lower triangle alone, and refactorize after new values
+  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold)))) + 1, n = side * side;
+  const ic::Sparse_matrix lower = screened_grid_laplacian(side, 4.5);
+  ic::Sparse_matrix whole = lower.selfadjointView<Eigen::Lower>();
+  for(int col = 0; col < n; ++col)
+    for(ic::Sparse_matrix::InnerIterator it(whole, col); it; ++it)
+      if(it.row() < col) it.valueRef() = 1e3; // above the diagonal: never read
+  ic::Sparse_matrix uncompressed = lower;
+  uncompressed.uncompress();
+  uncompressed.reserve(Eigen::VectorXi::Constant(n, 2)); // room left in every column
+  ASSERT_FALSE(uncompressed.isCompressed());
+  Eigen::VectorXd b(n), expected, x;
+  for(int k = 0; k < n; ++k) b[k] = std::cos(0.11 * k);
+  ic::Sparse_cholesky reference;
+  ASSERT_TRUE(reference.factorize(lower) && reference.solve(b, expected));
+  for(const ic::Sparse_matrix* A : {&whole, &uncompressed})
+  {
+    ic::Sparse_cholesky solver;
+    solver.analyze(*A);
+    ASSERT_TRUE(solver.factorize(*A) && solver.solve(b, x));
+    EXPECT_TRUE((x - expected).norm() <= 1e-12 * expected.norm()) << "storage " << (A == &whole ? "whole" : "uncompressed");
+    ic::Sparse_matrix doubled = 2. * (*A);
+    if(A == &uncompressed) { doubled.uncompress(); doubled.reserve(Eigen::VectorXi::Constant(n, 2)); }
+    ASSERT_TRUE(solver.factorize(doubled) && solver.solve(b, x));
+    EXPECT_TRUE((2. * x - expected).norm() <= 1e-12 * expected.norm()) << "refactorization";
+  }
+}
+
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
 TEST(TutteAndOptimizer, cholmod_runs_its_openmp_regions_serially)
 {

@@ -15,6 +15,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <vector>
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -86,12 +87,28 @@ class Sparse_cholesky
   Eigen::SimplicialLLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> llt_;
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
+  // CHOLMOD factorizes the lower triangle of P A P^T, permuted here: its own
+  // ordering (with its postorder) is computed once per analysis, and the
+  // factorization is then told the matrix is in natural order. Given A
+  // itself, every factorization copied it twice (P A P^T, then its
+  // transpose: 7% of a 10k-face run).
   Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> cholmod_;
+  std::vector<int> cholmod_inverse_order_; // position in P A P^T of each unknown
+  std::vector<int> cholmod_value_slot_;    // index in permuted_ of each stored value of A, -1 above the diagonal
+  Sparse_matrix compressed_;               // copy of an input not in compressed form
+
+  const Sparse_matrix& compressed(const Sparse_matrix& A)
+  {
+    if(A.isCompressed()) return A;
+    compressed_ = A;
+    compressed_.makeCompressed();
+    return compressed_;
+  }
 #endif
   Method method_ = Method::AMD;
   bool analyzed_ = false;
   Permutation permutation_, inverse_permutation_; // P and P^-1 (simplicial solvers only)
-  Sparse_matrix permuted_;                         // upper triangle of P A P^T
+  Sparse_matrix permuted_; // P A P^T: upper triangle (simplicial solvers), lower (CHOLMOD)
   Eigen::VectorXd permuted_b_, permuted_x_;
 
   /// Calls f with the simplicial solver in use (CHOLMOD is called directly).
@@ -145,6 +162,99 @@ class Sparse_cholesky
     permutation_ = inverse_permutation_.inverse();
   }
 
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+  /// CHOLMOD's fill-reducing ordering of A (its default choice, AMD or
+  /// nested dissection, followed by its postorder), the lower triangle of
+  /// P A P^T in permuted_ with the slot of each value of A, then CHOLMOD's
+  /// supernodal analysis of P A P^T in natural order.
+  void cholmod_analyze_permuted(const Sparse_matrix& input)
+  {
+    const Sparse_matrix& A = compressed(input);
+    const int n = int(A.rows());
+    cholmod_common& common = cholmod_.cholmod();
+    common.nmethods = 0; // CHOLMOD's default: AMD, nested dissection if AMD fills in a lot
+    common.postorder = 1;
+    common.supernodal = CHOLMOD_SIMPLICIAL; // the ordering only: no supernodal analysis here
+    cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+    cholmod_factor* ordering = cholmod_analyze(&view, &common);
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    cholmod_inverse_order_.assign(std::size_t(n), 0);
+    if(ordering == nullptr || ordering->Perm == nullptr)
+      for(int i = 0; i < n; ++i) cholmod_inverse_order_[i] = i;
+    else
+    {
+      const int* order = static_cast<const int*>(ordering->Perm);
+      for(int k = 0; k < n; ++k) cholmod_inverse_order_[order[k]] = k;
+    }
+    cholmod_free_factor(&ordering, &common);
+
+    // lower triangle of P A P^T, rows sorted in each column: a counting sort
+    // by row, then a stable one by column
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    const std::size_t stored = std::size_t(outer[n]);
+    std::vector<int> row_start(std::size_t(n) + 1, 0), column_start(std::size_t(n) + 1, 0);
+    for(int j = 0; j < n; ++j)
+      for(int k = outer[j]; k < outer[j + 1]; ++k)
+      {
+        if(inner[k] < j) continue; // only the lower triangle is read
+        const int r = cholmod_inverse_order_[inner[k]], c = cholmod_inverse_order_[j];
+        ++row_start[std::size_t((std::max)(r, c)) + 1];
+        ++column_start[std::size_t((std::min)(r, c)) + 1];
+      }
+    for(int i = 0; i < n; ++i)
+    {
+      row_start[i + 1] += row_start[i];
+      column_start[i + 1] += column_start[i];
+    }
+    const std::size_t nnz = std::size_t(row_start[n]);
+    std::vector<int> by_row(nnz), by_row_column(nnz); // values of A by their row in P A P^T, and their column
+    {
+      std::vector<int> next(row_start.begin(), row_start.end() - 1);
+      for(int j = 0; j < n; ++j)
+        for(int k = outer[j]; k < outer[j + 1]; ++k)
+        {
+          if(inner[k] < j) continue;
+          const int r = cholmod_inverse_order_[inner[k]], c = cholmod_inverse_order_[j];
+          const int position = next[(std::max)(r, c)]++;
+          by_row[position] = k;
+          by_row_column[position] = (std::min)(r, c);
+        }
+    }
+    permuted_.resize(n, n);
+    permuted_.resizeNonZeros(Eigen::Index(nnz));
+    std::copy(column_start.begin(), column_start.end(), permuted_.outerIndexPtr());
+    cholmod_value_slot_.assign(stored, -1);
+    std::vector<int> next(column_start.begin(), column_start.end() - 1);
+    int* rows = permuted_.innerIndexPtr();
+    for(int r = 0; r < n; ++r)
+      for(int position = row_start[r]; position < row_start[r + 1]; ++position)
+      {
+        const int slot = next[by_row_column[position]]++;
+        rows[slot] = r;
+        cholmod_value_slot_[std::size_t(by_row[position])] = slot;
+      }
+    std::fill_n(permuted_.valuePtr(), nnz, 0.);
+
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_NATURAL;
+    common.postorder = 0; // P is postordered already
+    // Supernodes merged more eagerly than CHOLMOD's defaults (4, 16, 48 columns;
+    // 0.8, 0.1, 0.05 zeros): CHOLMOD's per-supernode work around BLAS (an
+    // OpenMP region per small loop, even serial, is a futex call; timers;
+    // workspace clears) outweighs the extra zeros. bimba_i_f10000 (10k
+    // unknowns): 1441 -> about 800 supernodes. Whole runs (2 cores):
+    // bimba_i_f10000 2.81 -> 2.39 s, lion_o_f10000 5.47 -> 4.67 s, refined
+    // to 40k faces 6.86 -> 6.32 s, to 160k 18.7 -> 18.1 s; same Newton
+    // iterations, E_d and E_s. 16, 64, 256 or 32, 128, 512 columns were slower.
+    const std::size_t nrelax[3] = {12, 32, 96};
+    const double zrelax[3] = {0.8, 0.2, 0.1};
+    std::copy(nrelax, nrelax + 3, common.nrelax);
+    std::copy(zrelax, zrelax + 3, common.zrelax);
+    cholmod_.analyzePattern(permuted_);
+  }
+#endif
+
 public:
   /// Unknowns from which METIS orders the system (if built with it). Factorization
   /// of the distortion Hessian on bimba_i_f10000 and its midpoint subdivisions,
@@ -195,7 +305,7 @@ public:
       if(method_ == Method::CHOLMOD)
       {
         Serial_openmp_scope serial;
-        cholmod_.analyzePattern(A);
+        cholmod_analyze_permuted(A);
         return;
       }
 #endif
@@ -213,7 +323,11 @@ public:
     if(method_ == Method::CHOLMOD)
     {
       Serial_openmp_scope serial;
-      cholmod_.factorize(A);
+      double* values = permuted_.valuePtr();
+      const double* a = compressed(A).valuePtr();
+      for(std::size_t k = 0; k < cholmod_value_slot_.size(); ++k)
+        if(cholmod_value_slot_[k] >= 0) values[cholmod_value_slot_[k]] = a[k];
+      cholmod_.factorize(permuted_);
       return cholmod_.info() == Eigen::Success;
     }
 #endif
@@ -228,7 +342,11 @@ public:
     if(method_ == Method::CHOLMOD)
     {
       Serial_openmp_scope serial;
-      x = cholmod_.solve(b);
+      permuted_b_.resize(b.size());
+      for(Eigen::Index i = 0; i < b.size(); ++i) permuted_b_[cholmod_inverse_order_[i]] = b[i];
+      permuted_x_ = cholmod_.solve(permuted_b_);
+      x.resize(b.size());
+      for(Eigen::Index i = 0; i < b.size(); ++i) x[i] = permuted_x_[cholmod_inverse_order_[i]];
       return cholmod_.info() == Eigen::Success && x.allFinite();
     }
 #endif
