@@ -2,8 +2,9 @@
 // Eigen's simplicial Cholesky, ordered by AMD or, from metis_threshold
 // unknowns and when CGAL_SMP_CUT_USE_METIS is defined, by METIS's nested
 // dissection; from cholmod_threshold unknowns and when CGAL_SMP_CUT_USE_CHOLMOD
-// is defined, CHOLMOD's supernodal Cholesky (dense blocks through BLAS). Only
-// the lower triangle of the matrix is read.
+// is defined, CHOLMOD's supernodal Cholesky (dense blocks through BLAS), on
+// the matrix permuted here with CHOLMOD's ordering. Only the lower triangle
+// of the matrix is read; it may be stored whole, compressed or not.
 //
 // The fill-reducing ordering of the simplicial solvers is computed here, on
 // the graph of the UV vertices rather than of the unknowns (order()): a
@@ -285,10 +286,10 @@ public:
   ///
   /// With `keep_ordering`, the simplicial solvers use the ordering of the
   /// last analysis again (same size): only the symbolic analysis is redone.
-  /// CHOLMOD orders by itself in any case: giving it the matrix ordered by
-  /// METIS on the vertices (natural ordering inside), so that its ordering
-  /// could be kept too, was measured on bimba_i_f10000 x 16 (160k faces)
-  /// and gained nothing: its final solve took 120 s either way.
+  /// CHOLMOD's ordering is computed again in any case (cholmod_analyze_permuted()):
+  /// giving CHOLMOD the matrix ordered by METIS on the vertices, so that an
+  /// ordering could be kept, was measured on bimba_i_f10000 x 16 (160k
+  /// faces) and gained nothing: its final solve took 120 s either way.
   void analyze(const Sparse_matrix& A, int block_size = 1, bool keep_ordering = false)
   {
     if(!(keep_ordering && analyzed_ && method_ != Method::CHOLMOD && permutation_.size() == A.rows()))
