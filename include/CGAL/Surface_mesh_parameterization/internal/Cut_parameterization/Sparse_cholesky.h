@@ -324,8 +324,11 @@ public:
     if(method_ == Method::CHOLMOD)
     {
       Serial_openmp_scope serial;
+      const Sparse_matrix& source = compressed(A);
+      // another pattern than the analyzed one (a caller's error) must not write out of bounds
+      if(std::size_t(source.nonZeros()) != cholmod_value_slot_.size() || source.rows() != permuted_.rows()) return false;
       double* values = permuted_.valuePtr();
-      const double* a = compressed(A).valuePtr();
+      const double* a = source.valuePtr();
       for(std::size_t k = 0; k < cholmod_value_slot_.size(); ++k)
         if(cholmod_value_slot_[k] >= 0) values[cholmod_value_slot_[k]] = a[k];
       cholmod_.factorize(permuted_);
