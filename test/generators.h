@@ -259,6 +259,22 @@ inline Soup cylinder_patch_soup(int n_around, int n_up, double radius = 1., doub
   });
 }
 
+/// Closed axis-aligned box [0,a] x [0,b] x [0,c], two triangles per side
+/// (a cube by default): the low-poly case, its curvature all in 8 corners.
+inline Soup box_soup(double a = 1., double b = 1., double c = 1.)
+{
+  Soup s;
+  for(int k = 0; k < 8; ++k) s.add_point(k & 1 ? a : 0., k & 2 ? b : 0., k & 4 ? c : 0.);
+  // sides as quads (outward normals), split along a diagonal
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for(const auto& q : quads)
+  {
+    s.add_triangle(q[0], q[1], q[2]);
+    s.add_triangle(q[0], q[2], q[3]);
+  }
+  return s;
+}
+
 /// Closed sphere: octahedron with every face split into n² triangles,
 /// projected on the sphere of the given radius. `cut` is a path from the
 /// north pole (0,0,r) through (r,0,0) to the south pole, whose cutting leaves a disk.

@@ -1,7 +1,8 @@
 // distortion_bound: the result's E_d is within the bound when a seam cost
 // reaches it (a deep bowl at 4.2), a loose bound never lengthens the seams
-// of the default run, a bound no run reaches (4 on a curved surface) keeps
-// the lowest E_d found and says so, and bounds below 4 are refused. Every
+// of the default run, a bound no run reaches (4 on a curved surface, also
+// after the greedy splits that follow the λ search) keeps the lowest E_d
+// found and says so, and bounds below 4 are refused. Every
 // result is a valid atlas (check_cut_result()).
 #include "cut_result_checks.h"
 #include "generators.h"

@@ -305,9 +305,11 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     with seams as short as the search finds: whole runs with the seam cost
 ///     λ halved (at most 6 times) until E_d is within the bound, or doubled (at
 ///     most 3 times) while it is, then 2 bisections; the result is the run
-///     within the bound with the shortest seams. If no run reaches the bound, the
-///     run with the lowest E_d is returned and `distortion_bound_met` is false.
-///     Costs 3 to 9 runs. Default: no bound
+///     within the bound with the shortest seams. If no run reaches the bound,
+///     cuts are added greedily (see below) to the least distorted run and to
+///     the run at the given λ; if neither reaches it, the result with the
+///     lowest E_d is returned and `distortion_bound_met` is false. Costs 3 to
+///     11 runs. Default: no bound
 ///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this
 ///     many faces, the alternation decides the cuts on a copy simplified to
 ///     about this many faces (CGAL's Surface_mesh_simplification, keeping the
@@ -317,6 +319,14 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     20k faces, are unchanged)
 ///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
 ///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
+///
+/// Low-poly inputs: when the final map has E_d above 5 (faces too large for
+/// the field v to place cuts: a cube, a game asset), cuts are added one at a
+/// time, each the cheapest edge path from the vertex off the seams around
+/// which the map is most distorted to the border of its chart (forbidden
+/// edges and the λ map respected), kept while each lowers E_d by at least
+/// 0.15 per unit of E_s it adds; then the final solve runs again. Not with
+/// `number_of_passes(0)` (the seams are then the given ones only).
 ///
 /// The result is a texture atlas: the final solve runs from the alternation's
 /// map; if a chart's UV border then crosses itself, that solve is redone from a

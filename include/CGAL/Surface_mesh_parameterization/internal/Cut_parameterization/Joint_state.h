@@ -1,0 +1,97 @@
+// The state of the cut mesh that the joint optimization works on (which
+// edges are cut, the chart mesh, its map, the counters), and the one way to
+// cut it further (apply_cuts()).
+#ifndef CGAL_SMP_CUT_INTERNAL_JOINT_STATE_H
+#define CGAL_SMP_CUT_INTERNAL_JOINT_STATE_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// Wall seconds spent in each phase (Cut_and_parameterize_timings documents them).
+struct Joint_timings
+{
+  double initialization = 0.; // indexing, initial cut, chart mesh, Tutte
+  double u_steps = 0.;        // Newton minimizations of the alternation
+  double v_steps = 0.;        // discontinuity-field solves
+  double cut_extraction = 0.; // extract_cut_paths() and apply_cuts()
+  double final_solve = 0.;    // final_solve(), injective re-solve included
+  double packing = 0.;
+};
+
+/// The state of the cut mesh: which edges are cut, its chart mesh and UVs.
+struct Joint_state
+{
+  std::vector<char> is_cut;      // per surface edge
+  Cut_rules rules;               // forbidden edges and the cost of cutting each edge
+  Chart_mesh chart;
+  std::vector<int> corner_uv;    // per surface corner
+  UV_vector x;
+  Eigen::VectorXd v;             // per face
+  std::size_t newton_iterations = 0;
+  std::size_t factorizations = 0;   // numeric Cholesky factorizations of the Newton solves
+  std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
+  double initial_distortion = 0.;
+  double distortion = 0.;           // E_d of the final map, before packing scales it
+  Packing_result packing;
+  Joint_timings timings;
+};
+
+/// Cuts the edges of `paths`, then joins any closed slit (a path that does
+/// not reach the boundary) to the boundary by a short path, so every chart
+/// stays a topological disk (make_disks()). Rebuilds the chart mesh and
+/// carries the UVs over: both sides of a new cut start where the uncut
+/// vertex was, so the map stays flip-free.
+///
+/// With forbidden edges, a slit may have no way to the boundary: then the
+/// paths are taken one at a time, and those whose slit cannot be opened
+/// are left out.
+template <typename Surface>
+void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Joint_state& state)
+{
+  const std::vector<char> before = state.is_cut;
+  for(const Cut_path& path : paths)
+    for(int e : path.edges) state.is_cut[e] = 1;
+  if(!make_disks(surface, state.is_cut, state.rules))
+  {
+    state.is_cut = before;
+    for(const Cut_path& path : paths)
+    {
+      std::vector<char> trial = state.is_cut;
+      for(int e : path.edges) trial[e] = 1;
+      if(make_disks(surface, trial, state.rules)) state.is_cut.swap(trial);
+    }
+  }
+  const std::vector<int> old_corner_uv = state.corner_uv;
+  const UV_vector old_x = state.x;
+  build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  state.x.resize(2 * state.chart.number_of_vertices);
+  for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
+    state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
+}
+
+/// 3D length of the cut edges that are not on the mesh's border.
+template <typename Surface>
+double seam_length_3d(const Surface& surface, const std::vector<char>& is_cut)
+{
+  double length = 0.;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] > fe && is_cut[surface.edge_of[fe]]) length += surface.edge_length(fe);
+  return length;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
