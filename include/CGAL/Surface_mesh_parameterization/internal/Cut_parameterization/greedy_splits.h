@@ -103,15 +103,16 @@ Boundary_paths paths_to_cut_boundary(const Surface& surface, const std::vector<c
 /// E_d is above `stop_at` and `accept(E_d before, E_d after, E_s added)`
 /// takes a split; `solve(state)` solves a trial and sets its `distortion`.
 /// Returns OK or the first error of a solve (then `state` is the last
-/// accepted one).
+/// accepted one); `kept` counts the splits kept.
 template <typename Surface, typename Solve, typename Accept>
 Error_code split_greedily(const Surface& surface, const Split_settings& split, double stop_at, Solve solve,
-                          Accept accept, Joint_state& state)
+                          Accept accept, Joint_state& state, int& kept)
 {
   const double total_area = std::accumulate(state.chart.area.begin(), state.chart.area.end(), 0.);
   const double unit = std::sqrt(total_area / M_PI); // E_s is a length over this
-  for(int kept = 0; kept < split.max_splits && state.distortion > stop_at; ++kept)
+  for(kept = 0; kept < split.max_splits && state.distortion > stop_at; ++kept)
   {
+    const double seams = seam_length_3d(surface, state.is_cut);
     const std::vector<double> excess = vertex_distortion_excess(surface, state.chart, state.x);
     const Boundary_paths boundary = paths_to_cut_boundary(surface, state.is_cut, state.rules);
     // ranked by excess rounded to 1e-9 of the largest, then by index: on a
@@ -138,7 +139,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
       apply_cuts(surface, {path}, trial);
       const Error_code status = solve(trial);
       if(status != OK) return status;
-      const double added = (seam_length_3d(surface, trial.is_cut) - seam_length_3d(surface, state.is_cut)) / unit;
+      const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
       // (a path whose cut could not keep the charts disks is not cut: added 0)
       if(added > 0. && accept(state.distortion, trial.distortion, added))
       {
@@ -149,7 +150,6 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
       {
         state.newton_iterations = trial.newton_iterations; // the work was done anyway
         state.factorizations = trial.factorizations;
-        state.timings = trial.timings;
       }
     }
     if(!split_kept) break;

@@ -291,13 +291,13 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     Joint_state split = state;
     Error_code status = relax(split); // the baseline: the map without box
     if(status != OK) return status;
-    const std::size_t cuts = std::size_t(std::count(split.is_cut.begin(), split.is_cut.end(), 1));
     // under a bound, the map without box must leave room for the box's share of E_d
     const double box_share = (std::max)(0., state.distortion - split.distortion);
     const double stop_at = bounded ? settings.distortion_bound - box_share : 0.;
-    status = split_greedily(surface, settings.split, stop_at, relax, accept, split);
+    int kept = 0;
+    status = split_greedily(surface, settings.split, stop_at, relax, accept, split, kept);
     if(status != OK) return status;
-    if(std::size_t(std::count(split.is_cut.begin(), split.is_cut.end(), 1)) == cuts)
+    if(kept == 0)
     {
       state.newton_iterations = split.newton_iterations; // the trials' work
       state.factorizations = split.factorizations;
