@@ -3,12 +3,15 @@
 // Default mode (comparison.h): the benchmark meshes against the reference
 // implementation (the paper's published code, measured on this machine type)
 // and the paper's Table 1.
+// --optcuts (optcuts_comparison.h): the OptCuts meshes at equal distortion
+// against OptCuts' time, E_d and E_s.
 // --scaling (scaling.h): time, memory and where the time goes as the mesh
 // grows, up to 640k faces.
 //
 // Run with --help for the options.
 
 #include "comparison.h"
+#include "optcuts_comparison.h"
 #include "options.h"
 #include "scaling.h"
 
@@ -21,5 +24,6 @@ int main(int argc, char** argv)
   if(const int r = cut_benchmark::parse_options(argc, argv, opt)) return r == 1 ? 0 : r;
   cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();
-  return opt.scaling ? cut_benchmark::run_scaling(opt) : cut_benchmark::run_comparison(opt);
+  if(opt.scaling) return cut_benchmark::run_scaling(opt);
+  return opt.optcuts ? cut_benchmark::run_optcuts_comparison(opt) : cut_benchmark::run_comparison(opt);
 }

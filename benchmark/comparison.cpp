@@ -1,32 +1,18 @@
 #include "comparison.h"
 
-#include "benchmark_mesh.h"
-#include "median.h"
+#include "benchmark_run.h"
 #include "mesh_list.h"
 #include "reference_tables.h"
 #include "table_output.h"
 
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-
-#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
-#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
-#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <exception>
 #include <fstream>
 #include <iostream>
-#include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace cut_benchmark {
-
-namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
 
@@ -34,115 +20,6 @@ namespace {
 const double ED_TOLERANCE = 0.03;   // E_d <= ref E_d + 0.03
 const double ES_FACTOR = 1.25;      // E_s <= 1.25 ref E_s + 0.05
 const double ES_TOLERANCE = 0.05;
-
-struct Run_result
-{
-  std::string status;          // "ok", an error name, or a failure to read
-  std::size_t faces = 0;
-  bool ran = false;            // the algorithm was called
-  bool ok = false;
-  double time = NaN;           // median wall time of the algorithm (s)
-  std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
-  double distortion = NaN, seam_length = NaN, coverage = NaN;
-  std::string note;
-};
-
-bool close(double a, double b, double rel = 1e-6)
-{
-  if(std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
-  if(std::isinf(a) || std::isinf(b)) return a == b;
-  return std::abs(a - b) <= rel * std::max(1., std::max(std::abs(a), std::abs(b)));
-}
-
-template <typename NamedParameters>
-void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& out)
-{
-  auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:benchmark_seam", false).first;
-  auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:benchmark_uv").first;
-
-  std::vector<double> times;
-  SMP::Cut_and_parameterize_result first;
-  bool varies = false;
-  for(int r = 0; r < repeat; ++r)
-  {
-    for(auto e : mesh.edges()) put(seam, e, false);
-    for(auto h : mesh.halfedges()) put(uv, h, Kernel::Point_2(0., 0.));
-
-    const auto start = std::chrono::steady_clock::now();
-    const SMP::Cut_and_parameterize_result res = SMP::cut_and_parameterize(mesh, seam, uv, np);
-    const auto stop = std::chrono::steady_clock::now();
-    times.push_back(std::chrono::duration<double>(stop - start).count());
-    out.ran = true;
-
-    if(r == 0) first = res;
-    else if(res.error != first.error || !close(res.distortion, first.distortion, 1e-9)
-            || !close(res.seam_length, first.seam_length, 1e-9))
-      varies = true;
-    if(res.error != SMP::OK) break; // a failing mesh fails again; do not time it N times
-  }
-
-  out.time = median(times);
-  out.status = SMP::error_name(first.error);
-  out.ok = first.ok();
-  if(varies) out.note = "results vary across runs (first run shown)";
-  if(!out.ok) return;
-
-  out.newton = first.newton_iterations;
-  out.charts = first.number_of_charts;
-  out.distortion = first.distortion;
-  out.seam_length = first.seam_length;
-  out.coverage = first.uv_coverage;
-  // The maps hold the last run; with deterministic runs it is the first one.
-  out.flipped = SMP::number_of_flipped_faces(mesh, uv);
-  out.crossings = SMP::number_of_border_crossings(mesh, uv);
-  if(!varies)
-  {
-    const double ed = SMP::distortion_energy(mesh, uv, SMP::parameters::uv_scale(first.uv_scale));
-    const double es = SMP::seam_length(mesh, seam);
-    if(!close(ed, first.distortion) || !close(es, first.seam_length))
-    {
-      std::ostringstream os;
-      os.precision(6);
-      os << "metrics on the output disagree with the result: E_d " << ed << ", E_s " << es;
-      out.note = os.str();
-    }
-  }
-}
-
-template <typename NamedParameters>
-Run_result benchmark_mesh(const Mesh_entry& entry, const Options& opt, const NamedParameters& np)
-{
-  Run_result out;
-  if(entry.file.empty()) { out.status = "NOT_FOUND"; return out; }
-  Mesh mesh;
-  try
-  {
-    if(!CGAL::IO::read_polygon_mesh(entry.file.string(), mesh, CGAL::parameters::verbose(false)))
-    {
-      out.status = "READ_FAILED";
-      return out;
-    }
-  }
-  catch(const std::exception& e)
-  {
-    out.status = "READ_FAILED";
-    out.note = e.what();
-    return out;
-  }
-  out.faces = mesh.number_of_faces();
-  if(opt.quick && out.faces >= QUICK_MAX_FACES) { out.status = "skipped"; return out; }
-  try
-  {
-    run_method(mesh, opt.repeat_count(), np, out);
-  }
-  catch(const std::exception& e)
-  {
-    out.ok = false;
-    out.status = "EXCEPTION";
-    out.note = e.what();
-  }
-  return out;
-}
 
 struct Row
 {
@@ -153,8 +30,6 @@ struct Row
   int ed_pass = -1, es_pass = -1;  // -1: no reference to compare with
   double speedup = NaN;
 };
-
-std::string pass_text(int p) { return p < 0 ? "-" : (p ? "yes" : "NO"); }
 
 } // namespace
 
@@ -169,38 +44,15 @@ int run_comparison(const Options& opt)
     return 2;
   }
 
-  auto run = [&](const auto& np) {
-    std::vector<Row> rows;
-    for(const auto& m : meshes)
-    {
-      std::cerr << "[" << rows.size() + 1 << "/" << meshes.size() << "] " << m.name << " ... " << std::flush;
-      Row row;
-      row.mesh = m;
-      row.run = benchmark_mesh(m, opt, np);
-      std::cerr << row.run.status;
-      if(row.run.ran) std::cerr << " (" << time_text(row.run.time) << " s)";
-      std::cerr << "\n";
-      if(!row.run.note.empty()) std::cerr << "  note: " << row.run.note << "\n";
-      rows.push_back(std::move(row));
-    }
-    return rows;
-  };
-
-  namespace P = SMP::parameters;
+  const auto np = method_parameters(opt, library_defaults().distortion_bound);
   std::vector<Row> rows;
-  const SMP::internal::cut::Joint_settings defaults;
-  // --box W:H asks for a tight box, as bounding_box_aspect_ratio does in the library
-  const double stiffness = opt.box_stiffness.value_or(opt.box ? SMP::tight_bounding_box_stiffness
-                                                               : defaults.bounding_box_stiffness);
-  const double budget = opt.box || opt.box_stiffness ? std::numeric_limits<double>::infinity()
-                                                     : defaults.bounding_box_distortion_budget;
-  rows = run(P::lambda(opt.lambda.value_or(defaults.lambda),
-             P::number_of_passes(opt.passes.value_or(defaults.passes),
-             P::bounding_box_aspect_ratio(opt.box.value_or(defaults.bounding_box_aspect_ratio),
-             P::bounding_box_stiffness(stiffness,
-             P::bounding_box_distortion_budget(budget,
-             P::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces),
-             P::global_injectivity(!opt.allow_overlaps))))))));
+  for(const auto& m : meshes)
+  {
+    Row row;
+    row.mesh = m;
+    row.run = benchmark_mesh_logged(rows.size() + 1, meshes.size(), m, opt, np);
+    rows.push_back(std::move(row));
+  }
 
   // --quick: meshes left out for their size.
   std::vector<std::string> skipped_names;
@@ -267,13 +119,7 @@ int run_comparison(const Options& opt)
   std::cout << "cut_and_parameterize benchmark\n"
             << "  meshes:     " << opt.mesh_dir.lexically_normal().string() << "\n"
             << "  references: " << opt.reference_dir.lexically_normal().string() << "\n"
-            << "  parameters: lambda "
-            << (opt.lambda ? fixed(*opt.lambda, 3) : std::string("default")) << ", passes "
-            << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
-            << ", box aspect ratio " << fixed(opt.box.value_or(defaults.bounding_box_aspect_ratio), 3)
-            << " stiffness " << fixed(stiffness, 1)
-            << (opt.allow_overlaps ? ", overlaps allowed" : "")
-            << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "")
+            << "  parameters: " << parameters_text(opt)
             << (opt.quick ? "; --quick (faces < 5000)" : "") << "\n\n";
   print_table(std::cout, columns, cells);
 
@@ -338,15 +184,12 @@ int run_comparison(const Options& opt)
     csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,crossings,coverage,E_d,E_s,"
            "ref_time_s,ref_E_d,ref_E_s,paper_time_s,paper_E_d,paper_E_s,"
            "E_d_pass,E_s_pass,speedup,status\n";
-    auto pass_csv = [](int p) { return p < 0 ? std::string() : std::to_string(p); };
     for(const auto& row : rows)
     {
       const auto& r = row.run;
       const auto* m = row.measured;
       const auto* p = row.paper;
-      std::string file = row.mesh.file.empty() ? std::string()
-                                               : row.mesh.file.lexically_relative(opt.mesh_dir).generic_string();
-      csv << csv_field(row.mesh.name) << "," << csv_field(file) << ","
+      csv << csv_field(row.mesh.name) << "," << csv_field(relative_file(row.mesh, opt.mesh_dir)) << ","
           << (r.faces ? std::to_string(r.faces) : "") << ","
           << (r.ran ? full(r.time) : "") << ","
           << (r.ok ? std::to_string(r.newton) : "") << ","

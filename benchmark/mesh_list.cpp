@@ -28,7 +28,7 @@ fs::path find_mesh(const fs::path& dir, const std::string& name)
   return {};
 }
 
-std::vector<Mesh_entry> mesh_list(const Options& opt, const References& refs,
+std::vector<Mesh_entry> mesh_list(const Options& opt, const std::vector<std::string>& default_names,
                                   std::vector<std::string>& missing)
 {
   std::vector<Mesh_entry> list;
@@ -50,9 +50,21 @@ std::vector<Mesh_entry> mesh_list(const Options& opt, const References& refs,
     for(const auto& name : opt.meshes) add(name, true);
     return list;
   }
-  for(const auto& name : refs.measured_order) add(name, false);
-  for(const auto& file : refs.paper_files) add(file, false);
+  for(const auto& name : default_names) add(name, false);
   return list;
+}
+
+std::vector<Mesh_entry> mesh_list(const Options& opt, const References& refs,
+                                  std::vector<std::string>& missing)
+{
+  std::vector<std::string> names = refs.measured_order;
+  names.insert(names.end(), refs.paper_files.begin(), refs.paper_files.end());
+  return mesh_list(opt, names, missing);
+}
+
+std::string relative_file(const Mesh_entry& entry, const fs::path& mesh_dir)
+{
+  return entry.file.empty() ? std::string() : entry.file.lexically_relative(mesh_dir).generic_string();
 }
 
 } // namespace cut_benchmark

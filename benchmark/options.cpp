@@ -36,6 +36,10 @@ bool parse_aspect_ratio(const std::string& text, double& ratio)
 const char* const description =
   "Runs cut_and_parameterize() on a list of meshes and compares with the reference\n"
   "implementation's measured figures and the paper's Table 1.\n\n"
+  "OptCuts comparison (--optcuts): each mesh of optcuts_equal_distortion.csv under\n"
+  "distortion_bound(B), B the E_d OptCuts reached on it (or --optcuts-bound B for all);\n"
+  "time, E_d and E_s against OptCuts' (targets: E_d <= B, E_s <= OptCuts' E_s, time\n"
+  "<= OptCuts' time / 5).\n\n"
   "Scaling run (--scaling): time, memory and where the time goes, as the mesh grows.\n"
   "Meshes: optcuts/bimba_i_f10000.obj of the mesh folder, refined by 1-to-4 midpoint\n"
   "subdivision to 4, 16 and 64 times its faces, and CGAL's meshes/refined_elephant.off\n"
@@ -55,11 +59,13 @@ int parse_options(int argc, char** argv, Options& opt)
   const auto positive = CLI::PositiveNumber & CLI::Validator(
     [](std::string& v) { double x; return parse_double(v, x) && std::isfinite(x) ? std::string() : "not finite"; }, "");
 
-  // options of the comparison (default mode) and of the scaling run
-  const std::string comparison = "Comparison (default mode)", scaling = "Scaling run (--scaling)";
-  std::vector<CLI::Option*> comparison_only, scaling_only;
+  // options of the comparisons (default mode and --optcuts), of the default
+  // mode alone, and of the scaling run
+  const std::string comparison = "Comparisons (default mode and --optcuts)",
+                    optcuts = "OptCuts comparison (--optcuts)", scaling = "Scaling run (--scaling)";
+  std::vector<CLI::Option*> comparisons, comparison_only, scaling_only;
   std::string meshes;
-  comparison_only.push_back(
+  comparisons.push_back(
     app.add_option("--meshes", meshes,
                    "mesh names (file stems, e.g. cat,venus; or paths relative to\n"
                    "the mesh folder, e.g. optcuts/cat.obj). Default: every mesh named\n"
@@ -68,16 +74,17 @@ int parse_options(int argc, char** argv, Options& opt)
   app.add_option("--mesh-dir", opt.mesh_dir, "mesh folder (holding uvat/ and optcuts/); default\n"
                                              "../shared/meshes relative to the project root")
     ->type_name("DIR");
-  comparison_only.push_back(
+  comparisons.push_back(
     app.add_option("--reference-dir", opt.reference_dir,
-                   "folder of uvat_reference_measured.csv and paper_table1.csv;\n"
-                   "default ../shared/reference relative to the project root")
+                   "folder of uvat_reference_measured.csv, paper_table1.csv and\n"
+                   "optcuts_equal_distortion.csv; default ../shared/reference\n"
+                   "relative to the project root")
       ->type_name("DIR")->group(comparison));
-  comparison_only.push_back(app.add_option("--lambda", opt.lambda, "seam cost lambda (library default if not given)")
-                              ->type_name("X")->check(positive)->group(comparison));
-  comparison_only.push_back(app.add_option("--passes", opt.passes, "number of passes (library default if not given)")
-                              ->type_name("N")->check(CLI::NonNegativeNumber)->group(comparison));
-  comparison_only.push_back(
+  comparisons.push_back(app.add_option("--lambda", opt.lambda, "seam cost lambda (library default if not given)")
+                          ->type_name("X")->check(positive)->group(comparison));
+  comparisons.push_back(app.add_option("--passes", opt.passes, "number of passes (library default if not given)")
+                          ->type_name("N")->check(CLI::NonNegativeNumber)->group(comparison));
+  comparisons.push_back(
     app.add_option_function<std::string>("--box", [&opt](const std::string& v) {
         double ratio = 1.;
         parse_aspect_ratio(v, ratio);
@@ -89,7 +96,7 @@ int parse_options(int argc, char** argv, Options& opt)
           return parse_aspect_ratio(v, ratio) ? std::string() : "expected W:H, two positive numbers, got '" + v + "'";
         }, ""))
       ->group(comparison));
-  comparison_only.push_back(
+  comparisons.push_back(
     app.add_option("--box-stiffness", opt.box_stiffness,
                    "how hard the box pulls, >= 0 (0: no box; library default if not given)")
       ->type_name("S")->check(CLI::NonNegativeNumber)->group(comparison));
@@ -97,7 +104,7 @@ int parse_options(int argc, char** argv, Options& opt)
                  "cuts decided on a copy simplified to N faces for meshes\n"
                  "of more than 2N (0: full resolution; library default if not given)")
     ->type_name("N")->check(CLI::NonNegativeNumber);
-  comparison_only.push_back(
+  comparisons.push_back(
     app.add_flag("--allow-overlaps", opt.allow_overlaps,
                  "global_injectivity(false): no border barrier (with --box-stiffness 0, the\n"
                  "map as it was before the atlas work, only packed)")->group(comparison));
@@ -105,11 +112,24 @@ int parse_options(int argc, char** argv, Options& opt)
                  "runs per mesh; the time reported is their median (default 1;\n"
                  "with --scaling 3, for meshes up to " + std::to_string(SCALING_REPEAT_MAX_FACES) + " faces)")
     ->type_name("N")->check(CLI::PositiveNumber);
-  comparison_only.push_back(app.add_option("--csv", opt.csv_file, "also write the table as CSV")
-                              ->type_name("FILE")->group(comparison));
+  comparisons.push_back(app.add_option("--csv", opt.csv_file, "also write the table as CSV")
+                          ->type_name("FILE")->group(comparison));
   comparison_only.push_back(
-    app.add_flag("--quick", opt.quick, "only meshes with fewer than " + std::to_string(QUICK_MAX_FACES) + " faces")
+    app.add_flag("--quick", opt.quick, "only meshes with fewer than " + std::to_string(QUICK_MAX_FACES) + " faces\n"
+                 "(default mode only)")
       ->group(comparison));
+
+  app.add_flag("--optcuts", opt.optcuts, "compare with OptCuts under a distortion bound instead")->group(optcuts);
+  app.add_option("--optcuts-bound", opt.optcuts_bound,
+                 "every mesh under this bound B >= 4 instead of the E_d OptCuts\n"
+                 "reached (E_s not compared; implies --optcuts)")
+    ->type_name("B")
+    ->check(CLI::Validator([](std::string& v) {
+        double x;
+        return parse_double(v, x) && std::isfinite(x) && x >= 4.
+                 ? std::string() : "a distortion bound is a finite number >= 4, got '" + v + "'";
+      }, ""))
+    ->group(optcuts);
 
   app.add_flag("--scaling", opt.scaling, "run the scaling benchmark instead of the comparison")->group(scaling);
   scaling_only.push_back(app.add_option("--max-faces", opt.max_faces,
@@ -140,13 +160,19 @@ int parse_options(int argc, char** argv, Options& opt)
   for(const auto& name : split(meshes, ','))
     if(!trim(name).empty()) opt.meshes.push_back(trim(name));
   if(app.count("--meshes") && opt.meshes.empty()) { std::cerr << "error: --meshes: empty list\n"; return 2; }
-  for(CLI::Option* o : opt.scaling ? comparison_only : scaling_only)
-    if(o->count() > 0)
-    {
-      std::cerr << "error: " << o->get_name() << (opt.scaling ? " does not apply to --scaling\n" : " needs --scaling\n");
-      return 2;
-    }
-  return 0;
+  if(opt.optcuts_bound) opt.optcuts = true;
+  if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
+  // an option of another mode than the one run
+  auto misplaced = [](const std::vector<CLI::Option*>& options, const std::string& why) {
+    for(CLI::Option* o : options)
+      if(o->count() > 0) { std::cerr << "error: " << o->get_name() << why << "\n"; return true; }
+    return false;
+  };
+  if(opt.scaling)
+    return misplaced(comparisons, " does not apply to --scaling")
+           || misplaced(comparison_only, " does not apply to --scaling") ? 2 : 0;
+  if(misplaced(scaling_only, " needs --scaling")) return 2;
+  return opt.optcuts && misplaced(comparison_only, " does not apply to --optcuts") ? 2 : 0;
 }
 
 } // namespace cut_benchmark

@@ -1,5 +1,6 @@
 // Command line of the benchmark: the comparison with the reference tables
-// (default mode) and the scaling run (--scaling).
+// (default mode), the comparison with OptCuts (--optcuts) and the scaling run
+// (--scaling).
 #ifndef CUT_PARAM_BENCHMARK_OPTIONS_H
 #define CUT_PARAM_BENCHMARK_OPTIONS_H
 
@@ -34,6 +35,10 @@ struct Options
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;
+
+  // --optcuts
+  bool optcuts = false;
+  std::optional<double> optcuts_bound; // empty: each mesh under the E_d OptCuts reached
 
   // --scaling
   bool scaling = false;

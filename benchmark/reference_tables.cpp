@@ -121,4 +121,25 @@ References read_references(const fs::path& dir)
   return refs;
 }
 
+std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir)
+{
+  std::vector<Optcuts_figures> table;
+  std::vector<Csv_row> rows;
+  const fs::path file = dir / "optcuts_equal_distortion.csv";
+  if(!read_csv(file, rows))
+    std::cerr << "warning: cannot read " << file.string() << "\n";
+  for(const auto& row : rows)
+  {
+    Optcuts_figures f;
+    f.mesh = text_in(row, "mesh");
+    if(f.mesh.empty()) continue;
+    f.bound = number_in(row, "bound");
+    f.reached.time = number_in(row, "time_s");
+    f.reached.distortion = number_in(row, "E_d");
+    f.reached.seam_length = number_in(row, "E_s");
+    table.push_back(std::move(f));
+  }
+  return table;
+}
+
 } // namespace cut_benchmark

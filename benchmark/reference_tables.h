@@ -1,6 +1,7 @@
 // The reference figures the benchmark compares with: the reference
 // implementation measured on this machine type (uvat_reference_measured.csv)
-// and the paper's Table 1 (paper_table1.csv), keyed by mesh name (file stem).
+// and the paper's Table 1 (paper_table1.csv), keyed by mesh name (file stem);
+// for --optcuts, OptCuts under a distortion bound (optcuts_equal_distortion.csv).
 #ifndef CUT_PARAM_BENCHMARK_REFERENCE_TABLES_H
 #define CUT_PARAM_BENCHMARK_REFERENCE_TABLES_H
 
@@ -47,6 +48,20 @@ std::string stem_of(const std::string& name);
 /// Both tables of `dir`; a table that cannot be read is reported on std::cerr
 /// and left empty.
 References read_references(const fs::path& dir);
+
+/// A row of optcuts_equal_distortion.csv: OptCuts run with its distortion
+/// bound set to `bound` (the reference implementation's E_d on the mesh), and
+/// what it reached (its time, E_d and E_s).
+struct Optcuts_figures
+{
+  std::string mesh;     // file stem
+  double bound = NaN;
+  Reference_figures reached;
+};
+
+/// The rows of `dir`/optcuts_equal_distortion.csv, in the file's order; empty
+/// (reported on std::cerr) if the file cannot be read.
+std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir);
 
 } // namespace cut_benchmark
 
