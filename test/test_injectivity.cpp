@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
 
 #include <limits>
 #include <random>
@@ -358,6 +359,20 @@ TEST(Injectivity, border_barrier_stops_a_border_before_it_crosses_another)
   const std::vector<char> charts = barrier.charts_with_crossing(crossed);
   ASSERT_EQ(charts.size(), std::size_t(1));
   EXPECT_EQ(charts[0], 1);
+}
+
+TEST(Injectivity, seam_closing_springs_gradient_matches_finite_differences)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(5, 20), chart);
+  const int n = chart.mesh.number_of_vertices;
+  ic::Seam_closing_term springs({{0, n - 1}, {1, n / 2}, {2, 3}}, 7.);
+  EXPECT_TRUE(springs.value(chart.x) > 0.);
+  check_gradient(springs, chart.x, 5);
+  // a pair at one point costs nothing
+  ic::UV_vector x = chart.x;
+  x.segment<2>(2 * (n - 1)) = x.segment<2>(0);
+  EXPECT_REL(springs.value(x), springs.value(chart.x) - 7. * (chart.x.segment<2>(0) - chart.x.segment<2>(2 * (n - 1))).squaredNorm(), 1e-12);
 }
 
 TEST(Injectivity, bounding_box_gradient_matches_finite_differences)

@@ -13,9 +13,11 @@
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -32,6 +34,91 @@ struct Bound_search_settings
   int steps_up = 3;     // doublings of λ at most (λ · 8)
   int bisections = 2;   // refinements between failing and passing λ
 };
+
+/// Seams of the solved cut mesh in `state`, whose E_d is within the bound,
+/// zipped back (seam_merging.h) while the map stays within it: each zip is
+/// judged after a few Newton iterations without box and border barrier
+/// (Merge_settings), against the bound less the box's share of E_d; then the
+/// final solve runs again (crossing check, box within the bound). If that
+/// ends above the bound (a chart whose border crossed is solved again from
+/// its Tutte map), the zips are undone from the last, halving their number
+/// (at most three final solves); with none left, `state` is left as it was.
+/// The edges flagged in `keep` stay cut.
+template <typename Surface>
+Error_code merge_under_bound(const Surface& surface, const Joint_settings& settings, const std::vector<char>& keep,
+                             Joint_state& state)
+{
+  const double bound = settings.distortion_bound;
+  if(!settings.seam_merging || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
+  const std::vector<double> ones(state.chart.number_of_faces(), 1.);
+  auto relax = [&](Joint_state& s) {
+    Distortion_minimizer minimizer(s.chart, ones);
+    const Newton_report report = minimizer.minimize(s.x, settings.merge.newton_iterations, settings.constrained_tolerance);
+    s.newton_iterations += report.iterations;
+    s.factorizations += report.factorizations;
+    s.distortion = mean_distortion(s.chart, s.x);
+    return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  };
+  Joint_state merged = state;
+  Error_code status = relax(merged); // the baseline: the map without box
+  if(status != OK) return status;
+  const double stop_at = bound - (std::max)(0., state.distortion - merged.distortion);
+  std::vector<Merge_step> steps;
+  if(merged.distortion < stop_at)
+    status = merge_greedily(surface, settings.merge, keep, relax,
+                            [&](double, double after) { return after <= stop_at; }, merged, steps);
+  if(status != OK) return status;
+  Joint_settings final_settings = settings;
+  final_settings.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
+  for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < 3; k /= 2, ++tries)
+  {
+    Joint_state solved = merged;
+    solved.is_cut = steps[k - 1].is_cut;
+    solved.x = steps[k - 1].x;
+    build_chart_mesh(surface, solved.is_cut, solved.chart, solved.corner_uv);
+    if((status = final_solve(final_settings, false, solved)) != OK) return status;
+    solved.distortion = mean_distortion(solved.chart, solved.x);
+    merged.newton_iterations = solved.newton_iterations;
+    merged.factorizations = solved.factorizations;
+    if(solved.distortion <= bound)
+    {
+      state = std::move(solved);
+      return OK;
+    }
+  }
+  state.newton_iterations = merged.newton_iterations; // the trials' work
+  state.factorizations = merged.factorizations;
+  return OK;
+}
+
+/// Seams of the solved cut mesh in `state` rerouted along shorter paths
+/// (seam_straightening.h), the map solved again from a Tutte map; kept if
+/// its E_d is within the bound.
+template <typename Surface>
+Error_code straighten_under_bound(const Surface& surface, const Joint_settings& settings, const std::vector<char>& keep,
+                                  Joint_state& state)
+{
+  const double bound = settings.distortion_bound;
+  const int rings = settings.seam_straightening_rings;
+  if(rings <= 0 || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
+  Joint_state s = state;
+  const int rerouted = straighten_seams(surface, s.rules, keep, rings, s.is_cut);
+  if(rerouted == 0) return OK;
+  build_chart_mesh(surface, s.is_cut, s.chart, s.corner_uv);
+  if(disk_charts_embedding(s.chart, s.x) != Embedding_status::OK) return OK;
+  Joint_settings final_settings = settings;
+  final_settings.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
+  const Error_code status = final_solve(final_settings, true, s);
+  if(status != OK) return status;
+  s.distortion = mean_distortion(s.chart, s.x);
+  if(s.distortion <= bound) state = std::move(s);
+  else
+  {
+    state.newton_iterations = s.newton_iterations;
+    state.factorizations = s.factorizations;
+  }
+  return OK;
+}
 
 /// joint_optimization() under `settings.distortion_bound` (> 0): fills
 /// `state` with the chosen trial; `bound_met` tells whether its E_d is
@@ -53,6 +140,11 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   Joint_timings timings = start.timings; // what came before (indexing)
 
   double best_any_lambda = 0.;
+  // The trials, the rerouting and the merges run without the bounding box:
+  // the bound's room goes to shorter seams first; the box comes last, within
+  // what the bound leaves (bounding_box_distortion_ceiling).
+  Joint_settings unboxed = settings;
+  unboxed.bounding_box_stiffness = 0.;
   // A trial runs as without bound, or with the splits that go on until the
   // bound holds (`split_to_bound`). Without bound, the low-poly splits only
   // run at or below the given λ: above it, the search asks for fewer seams,
@@ -60,7 +152,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   // (circular_box_o_f20000 under 4.537: 9.9 -> 37.9 s, E_s 1.78 -> 1.71;
   // armadillo_i_f10000 under 5.222: 23.7 -> 60.4 s, E_s 3.26 -> 3.42).
   auto trial = [&](double lambda, bool& passed, bool split_to_bound = false) {
-    Joint_settings trial_settings = settings;
+    Joint_settings trial_settings = unboxed;
     trial_settings.lambda = lambda;
     if(!split_to_bound)
     {
@@ -68,7 +160,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
       trial_settings.greedy_splits = settings.greedy_splits && lambda <= settings.lambda;
     }
     Joint_state s = start;
-    const Error_code status = joint_optimization(surface, face_lambda, trial_settings, s);
+    const Error_code status = optimize_cut_mesh(surface, face_lambda, trial_settings, s);
     newton += s.newton_iterations;
     factorizations += s.factorizations;
     timings.initialization += s.timings.initialization - start.timings.initialization;
@@ -140,10 +232,26 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
 
   state = have_pass ? std::move(best_pass) : std::move(best_any);
   bound_met = have_pass;
+  if(have_pass)
+  {
+    const std::size_t before_newton = state.newton_iterations, before_factorizations = state.factorizations;
+    Scoped_timer merging(timings.final_solve);
+    if((status = straighten_under_bound(surface, unboxed, start.is_cut, state)) != OK) return status;
+    if((status = merge_under_bound(surface, unboxed, start.is_cut, state)) != OK) return status;
+    if(unboxed.bounding_box_stiffness != settings.bounding_box_stiffness)
+    {
+      Joint_settings boxed = settings;
+      boxed.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
+      if((status = final_solve(boxed, false, state)) != OK) return status;
+      state.distortion = mean_distortion(state.chart, state.x);
+    }
+    newton += state.newton_iterations - before_newton;
+    factorizations += state.factorizations - before_factorizations;
+  }
   state.newton_iterations = newton;
   state.factorizations = factorizations;
   state.timings = timings;
-  return OK;
+  return finish_atlas(settings, state);
 }
 
 } // namespace cut

@@ -13,9 +13,11 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scoped_timer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 
 #include <algorithm>
+#include <limits>
 #include <functional>
 #include <string>
 
@@ -65,6 +67,9 @@ struct Joint_settings
   double bounding_box_stiffness = gentle_bounding_box_stiffness;
   // largest E_d increase the box may cost (see gentle_bounding_box_distortion_budget)
   double bounding_box_distortion_budget = gentle_bounding_box_distortion_budget;
+  // the box is also weakened, then dropped, where it would take E_d above
+  // this (a distortion bound's trials set it: the bound comes before the box)
+  double bounding_box_distortion_ceiling = std::numeric_limits<double>::infinity();
   // Multiresolution: on a mesh of more than twice this many faces, the cuts
   // are decided on a copy simplified to about this many (0: never).
   int multiresolution_faces = 10000;
@@ -73,6 +78,12 @@ struct Joint_settings
   // greedy splits after the final solve (split_where_distorted())
   bool greedy_splits = true;
   Split_settings split;
+  // under a bound: seams rerouted along shorter paths within this many rings
+  // (straighten_under_bound(); 0: never), then zipped back where the bound
+  // leaves room (merge_under_bound())
+  int seam_straightening_rings = 3;
+  bool seam_merging = true;
+  Merge_settings merge;
   Packing_settings packing;
   std::function<bool(const Joint_progress&)> progress; // false: cancel
 
@@ -231,8 +242,11 @@ inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_ma
   }
   if(!barrier && stiffness > 0.) status = solve_keeping_borders(stiffness);
   // the box's cost in distortion, over the map without box, stays within the budget
-  for(int weaker = 0; status == OK && stiffness > 0. && weaker < 3
-                      && mean_distortion(state.chart, state.x) > unboxed + settings.bounding_box_distortion_budget;
+  // and below the ceiling where the map without box is
+  const double ceiling = unboxed <= settings.bounding_box_distortion_ceiling
+                           ? settings.bounding_box_distortion_ceiling : std::numeric_limits<double>::infinity();
+  const double highest = (std::min)(unboxed + settings.bounding_box_distortion_budget, ceiling);
+  for(int weaker = 0; status == OK && stiffness > 0. && weaker < 3 && mean_distortion(state.chart, state.x) > highest;
       ++weaker)
   {
     stiffness = weaker < 2 ? 0.7 * stiffness : 0.;
@@ -408,12 +422,13 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   return true;
 }
 
-/// The whole method from `state.is_cut` (seams given by the user): where to
-/// cut (on a simplified copy for large meshes), the final solve, packing.
-/// Fills the rest of `state`.
+/// The method from `state.is_cut` (seams given by the user) up to the
+/// solved cut mesh: where to cut (on a simplified copy for large meshes),
+/// the final solve, the greedy splits; `state.distortion` is its E_d. The
+/// charts are not packed yet (finish_atlas()).
 template <typename Surface>
-Error_code joint_optimization(const Surface& surface, const std::vector<double>& input_face_lambda,
-                              const Joint_settings& settings, Joint_state& state)
+Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& input_face_lambda,
+                             const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
   const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
@@ -430,9 +445,13 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
   const Error_code final_status = final_solve(settings, coarse || settings.passes == 0, state);
   if(final_status != OK) return final_status;
   state.distortion = mean_distortion(state.chart, state.x);
-  const Error_code split_status = split_where_distorted(surface, settings, state);
-  if(split_status != OK) return split_status;
-  final_timer.stop();
+  return split_where_distorted(surface, settings, state);
+}
+
+/// Packs the charts of the solved cut mesh in `state` and checks the result
+/// (finite, no flipped face, no forbidden edge cut).
+inline Error_code finish_atlas(const Joint_settings& settings, Joint_state& state)
+{
   Scoped_timer packing_timer(state.timings.packing);
   state.packing = pack_charts(state.chart, state.x, settings.packing);
   packing_timer.stop();
@@ -444,6 +463,16 @@ Error_code joint_optimization(const Surface& surface, const std::vector<double>&
                                               settings.epsilon_end, state.distortion}))
     return ERROR_CANCELED;
   return OK;
+}
+
+/// The whole method from `state.is_cut` (seams given by the user):
+/// optimize_cut_mesh(), then finish_atlas(). Fills the rest of `state`.
+template <typename Surface>
+Error_code joint_optimization(const Surface& surface, const std::vector<double>& input_face_lambda,
+                              const Joint_settings& settings, Joint_state& state)
+{
+  const Error_code status = optimize_cut_mesh(surface, input_face_lambda, settings, state);
+  return status != OK ? status : finish_atlas(settings, state);
 }
 
 } // namespace cut

@@ -1,0 +1,245 @@
+// Seams zipped back from their free ends (the merge step of OptCuts, Li et
+// al. 2018, by stretches of seam instead of single vertex pairs): where the
+// map has room left under a distortion bound, the seams that bought less
+// than they cost are closed again.
+//
+// The seams form a graph on the surface's vertices. A branch starts at a
+// tip (a vertex off the mesh border with one seam edge), follows the seam
+// through vertices with two seam edges and ends at the first other vertex
+// (a junction, the mesh border, another tip). Zipping the first k edges of a
+// branch from its tip leaves every chart a disk, as long as the seams that
+// remain still open every chart (checked: a closed surface needs some seam).
+// The two copies of every zipped vertex become one, placed at their mean;
+// where that would flip a face, the copies are first pulled together by
+// springs minimized with the distortion (Seam_closing_term.h, whose
+// flip-free steps keep every face valid), then joined. The map
+// is then solved again (by the caller) and the zip kept if the rule of the
+// caller accepts the distortion it leaves.
+//
+// Each branch is tried whole, then halved (5 lengths at most, down to one edge);
+// branches are taken where the map is least distorted first (the
+// distortion there is what the seam relieves).
+#ifndef CGAL_SMP_CUT_INTERNAL_SEAM_MERGING_H
+#define CGAL_SMP_CUT_INTERNAL_SEAM_MERGING_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// How far the merges go (the defaults are what `cut_and_parameterize()` uses).
+struct Merge_settings
+{
+  int max_trials = 48;        // zips solved at most
+  int newton_iterations = 20; // Newton iterations that judge a zip
+};
+
+/// The seams and the map after a zip.
+struct Merge_step
+{
+  std::vector<char> is_cut;
+  UV_vector x;
+};
+
+/// A stretch of seam from a tip: its surface edges and vertices in order
+/// (vertices[0] is the tip, vertices[i+1] the far end of edges[i]).
+struct Seam_branch
+{
+  std::vector<int> edges;
+  std::vector<int> vertices;
+};
+
+/// The branches of the seams (interior cut edges) that start at a tip; the
+/// edges flagged in `keep` (the user's seams) are never part of one.
+template <typename Surface>
+std::vector<Seam_branch> seam_branches(const Surface& surface, const std::vector<char>& is_cut,
+                                       const std::vector<char>& keep)
+{
+  const int nv = int(surface.number_of_vertices());
+  std::vector<std::vector<std::array<int, 2>>> seam(nv); // (edge, other vertex)
+  std::vector<char> on_border(nv, 0), kept_seam(nv, 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int a = surface.edge_source(fe), b = surface.edge_target(fe), e = surface.edge_of[fe];
+    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
+    else if(surface.twin[fe] > fe && is_cut[e])
+    {
+      if(is_flagged(keep, e)) { kept_seam[a] = kept_seam[b] = 1; continue; }
+      seam[a].push_back({e, b});
+      seam[b].push_back({e, a});
+    }
+  }
+  std::vector<Seam_branch> branches;
+  for(int tip = 0; tip < nv; ++tip)
+  {
+    if(seam[tip].size() != 1 || on_border[tip] || kept_seam[tip]) continue;
+    Seam_branch branch;
+    branch.vertices.push_back(tip);
+    int v = tip, from_edge = -1;
+    for(;;)
+    {
+      const auto& next = seam[v][0][0] != from_edge ? seam[v][0] : seam[v][1];
+      branch.edges.push_back(next[0]);
+      branch.vertices.push_back(next[1]);
+      from_edge = next[0];
+      v = next[1];
+      if(seam[v].size() != 2 || on_border[v] || kept_seam[v] || v == tip) break;
+    }
+    // a seam that is one path with two tips is found from both ends: once is enough
+    if(seam[v].size() == 1 && !on_border[v] && !kept_seam[v] && v < tip) continue;
+    branches.push_back(std::move(branch));
+  }
+  return branches;
+}
+
+/// The mean of the distinct UV vertices of `from` (corners `from_corner_uv`)
+/// that each UV vertex of `to` joins (corners `to_corner_uv`); `pairs` gets
+/// the pairs of UV vertices of `from` that become one.
+inline UV_vector joined_positions(const std::vector<int>& from_corner_uv, const UV_vector& from_x,
+                                  const std::vector<int>& to_corner_uv, int to_vertices,
+                                  std::vector<std::array<int, 2>>& pairs)
+{
+  UV_vector x = UV_vector::Zero(2 * to_vertices);
+  std::vector<int> first(to_vertices, -1), count(to_vertices, 0);
+  std::set<std::pair<int, int>> seen; // (new, old) pairs
+  pairs.clear();
+  for(std::size_t c = 0; c < from_corner_uv.size(); ++c)
+  {
+    const int n = to_corner_uv[c], o = from_corner_uv[c];
+    if(!seen.insert({n, o}).second) continue;
+    x.template segment<2>(2 * n) += from_x.template segment<2>(2 * o);
+    ++count[n];
+    if(first[n] < 0) first[n] = o;
+    else pairs.push_back({first[n], o});
+  }
+  for(int n = 0; n < to_vertices; ++n) x.template segment<2>(2 * n) /= count[n];
+  return x;
+}
+
+/// Pulls the UV vertices of each pair of `pairs` together in `x` (a map of
+/// `chart` without flipped face) by springs of growing stiffness minimized
+/// with the distortion, until the widest gap is below 1e-3 of the mean edge
+/// length or the springs are 1e5 times the distortion's scale. Adds the
+/// Newton work to `iterations` and `factorizations`; x stays flip-free.
+inline bool pull_pairs_together(const Chart_mesh& chart, const std::vector<std::array<int, 2>>& pairs,
+                                UV_vector& x, std::size_t& iterations, std::size_t& factorizations)
+{
+  const std::vector<double> ones(chart.number_of_faces(), 1.);
+  Distortion_term distortion(chart, ones);
+  Seam_closing_term springs(pairs, 1.);
+  Projected_newton_solver solver({&distortion, &springs}, 2 * chart.number_of_vertices);
+  double area = 0.;
+  for(double a : chart.area) area += a;
+  const double edge = std::sqrt(2. * area / double((std::max)(std::size_t(1), chart.number_of_faces())));
+  Newton_settings settings;
+  settings.max_iterations = 8;
+  settings.tolerance = 1e-7;
+  settings.energy_scale = distortion.weighted_area();
+  for(double stiffness = 1.; stiffness <= 1e5 && springs.largest_gap(x) > 1e-3 * edge; stiffness *= 10.)
+  {
+    springs.set_stiffness(stiffness);
+    const Newton_report report = solver.minimize(x, settings);
+    iterations += report.iterations;
+    factorizations += report.factorizations;
+    if(!report.ok()) return false;
+  }
+  return true;
+}
+
+/// `state` with `edges` no longer cut: the chart mesh rebuilt, the copies of
+/// each zipped vertex joined at their mean; where that would flip a face,
+/// the copies are first pulled together (pull_pairs_together()). Returns
+/// false (and leaves `zipped` undefined) if a chart would not be a disk or
+/// a face would still flip.
+template <typename Surface>
+bool zip_seam(const Surface& surface, const Joint_state& state, const std::vector<int>& edges, Joint_state& zipped)
+{
+  zipped = state;
+  for(int e : edges) zipped.is_cut[e] = 0;
+  build_chart_mesh(surface, zipped.is_cut, zipped.chart, zipped.corner_uv);
+  const Chart_topology topology = chart_topology(zipped.chart);
+  for(int c = 0; c < topology.number_of_charts; ++c)
+    if(!topology.is_disk(c)) return false;
+  std::vector<std::array<int, 2>> pairs;
+  zipped.x = joined_positions(state.corner_uv, state.x, zipped.corner_uv, zipped.chart.number_of_vertices, pairs);
+  if(number_of_flipped_faces(zipped.chart, zipped.x) == 0) return true;
+  UV_vector pulled = state.x;
+  if(!pull_pairs_together(state.chart, pairs, pulled, zipped.newton_iterations, zipped.factorizations)) return false;
+  zipped.x = joined_positions(state.corner_uv, pulled, zipped.corner_uv, zipped.chart.number_of_vertices, pairs);
+  return number_of_flipped_faces(zipped.chart, zipped.x) == 0;
+}
+
+/// Zips the seams of `state` (a solved cut mesh, `state.distortion` its
+/// E_d) while `accept(E_d before, E_d after)` takes a zip; `solve(state)`
+/// solves a trial and sets its `distortion`. The edges flagged in `keep`
+/// stay cut. Returns OK or the first error of a solve (then `state` is the
+/// last accepted one); `kept` gets the seams and map after each zip kept.
+template <typename Surface, typename Solve, typename Accept>
+Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, const std::vector<char>& keep,
+                          Solve solve, Accept accept, Joint_state& state, std::vector<Merge_step>& kept)
+{
+  kept.clear();
+  std::set<int> done; // tips whose branch was tried to the end
+  for(int trials = 0; trials < merge.max_trials;)
+  {
+    const std::vector<Seam_branch> branches = seam_branches(surface, state.is_cut, keep);
+    const std::vector<double> excess = vertex_distortion_excess(surface, state.chart, state.x);
+    // the branch around which the map is least distorted, per unit of its length
+    int best = -1;
+    double best_density = 0.;
+    for(int b = 0; b < int(branches.size()); ++b)
+    {
+      if(done.count(branches[b].vertices.front())) continue;
+      double sum = 0.;
+      for(int v : branches[b].vertices) sum += excess[v];
+      const double density = sum / double(branches[b].vertices.size());
+      if(best < 0 || density < best_density) { best = b; best_density = density; }
+    }
+    if(best < 0) break;
+    const Seam_branch& branch = branches[best];
+    done.insert(branch.vertices.front());
+    bool zipped_some = false;
+    std::size_t k = branch.edges.size();
+    for(int attempt = 0; attempt < 5 && k >= 1 && trials < merge.max_trials && !zipped_some;
+        ++attempt, k = k == 1 ? 0 : (k + 1) / 2)
+    {
+      Joint_state trial;
+      if(!zip_seam(surface, state, std::vector<int>(branch.edges.begin(), branch.edges.begin() + k), trial)) continue;
+      ++trials;
+      const Error_code status = solve(trial);
+      if(status != OK) return status;
+      if(accept(state.distortion, trial.distortion))
+      {
+        state = std::move(trial);
+        zipped_some = true;
+        kept.push_back({state.is_cut, state.x});
+      }
+      else
+      {
+        state.newton_iterations = trial.newton_iterations; // the work was done anyway
+        state.factorizations = trial.factorizations;
+      }
+    }
+  }
+  return OK;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

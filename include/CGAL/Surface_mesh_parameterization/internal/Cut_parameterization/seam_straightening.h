@@ -1,0 +1,204 @@
+// Seams rerouted along shorter edge paths in their corridor. The cuts that
+// the field v opens follow its low band through the mesh's edges, and edge
+// paths zigzag: the same seam, taken along the shortest edge path between
+// its ends within a few rings of where it runs, costs less seam length for
+// almost the same distortion (the map is solved again and judged by the
+// caller).
+//
+// The seams are split into paths between nodes: vertices where the seam
+// graph branches or ends, vertices on the mesh border, and vertices of
+// seams the user gave (never moved). Each path is replaced by the cheapest
+// path (Cut_rules: the λ map, forbidden edges) between its two end nodes
+// through the vertices within `rings` rings of it that touch no other seam
+// and no border; the replacement is kept if it is cheaper and every chart
+// is still a disk, with the same number of charts.
+#ifndef CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
+#define CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
+
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// A seam between two nodes: its surface edges and vertices in order
+/// (vertices[i], vertices[i+1] are the ends of edges[i]).
+struct Seam_path
+{
+  std::vector<int> edges;
+  std::vector<int> vertices;
+};
+
+/// The seam graph of `is_cut` (interior cut edges, those flagged in `keep`
+/// left out) on the surface's vertices: per vertex, its (edge, other
+/// vertex) pairs; `node` flags the vertices where paths end.
+struct Seam_graph
+{
+  std::vector<std::vector<std::array<int, 2>>> arcs;
+  std::vector<char> node;
+};
+
+template <typename Surface>
+Seam_graph seam_graph(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& keep)
+{
+  const int nv = int(surface.number_of_vertices());
+  Seam_graph g;
+  g.arcs.assign(nv, {});
+  g.node.assign(nv, 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int a = surface.edge_source(fe), b = surface.edge_target(fe), e = surface.edge_of[fe];
+    if(surface.twin[fe] < 0 || (is_cut[e] && is_flagged(keep, e))) g.node[a] = g.node[b] = 1;
+    else if(surface.twin[fe] > fe && is_cut[e])
+    {
+      g.arcs[a].push_back({e, b});
+      g.arcs[b].push_back({e, a});
+    }
+  }
+  for(int v = 0; v < nv; ++v)
+    if(!g.arcs[v].empty() && g.arcs[v].size() != 2) g.node[v] = 1;
+  return g;
+}
+
+/// The paths of the seam graph from node to node (closed loops through no
+/// node are left out: nothing fixes their ends).
+template <typename Surface>
+std::vector<Seam_path> seam_paths(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& keep)
+{
+  const Seam_graph g = seam_graph(surface, is_cut, keep);
+  std::vector<char> used(surface.edges.size(), 0);
+  std::vector<Seam_path> paths;
+  for(int start = 0; start < int(g.arcs.size()); ++start)
+  {
+    if(!g.node[start]) continue;
+    for(const auto& first : g.arcs[start])
+    {
+      if(used[first[0]]) continue;
+      Seam_path path;
+      path.vertices.push_back(start);
+      int e = first[0], v = first[1];
+      for(;;)
+      {
+        used[e] = 1;
+        path.edges.push_back(e);
+        path.vertices.push_back(v);
+        if(g.node[v]) break;
+        const auto& next = g.arcs[v][0][0] != e ? g.arcs[v][0] : g.arcs[v][1];
+        e = next[0];
+        v = next[1];
+      }
+      paths.push_back(std::move(path));
+    }
+  }
+  return paths;
+}
+
+/// Reroutes the seams of `is_cut` (see the file's comment); the edges
+/// flagged in `keep` stay as they are. Returns the number of paths
+/// rerouted.
+template <typename Surface>
+int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::vector<char>& keep, int rings,
+                     std::vector<char>& is_cut)
+{
+  const int nv = int(surface.number_of_vertices());
+  std::vector<std::vector<int>> neighbors(nv);
+  std::vector<char> on_border(nv, 0), on_old(surface.edges.size(), 0);
+  std::vector<std::vector<int>> edges_around(nv); // face-edges leaving each vertex
+  std::vector<int> face_edge_of(surface.edges.size(), -1);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int a = surface.edge_source(fe), b = surface.edge_target(fe);
+    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
+    if(surface.twin[fe] < fe) // each edge once
+    {
+      neighbors[a].push_back(b);
+      neighbors[b].push_back(a);
+    }
+    edges_around[a].push_back(fe);
+    if(face_edge_of[surface.edge_of[fe]] < 0) face_edge_of[surface.edge_of[fe]] = fe;
+  }
+  auto charts_are_disks = [&](const std::vector<char>& cut, int& charts) {
+    Chart_mesh chart;
+    std::vector<int> corner_uv;
+    build_chart_mesh(surface, cut, chart, corner_uv);
+    const Chart_topology topology = chart_topology(chart);
+    charts = topology.number_of_charts;
+    for(int c = 0; c < topology.number_of_charts; ++c)
+      if(!topology.is_disk(c)) return false;
+    return true;
+  };
+  int charts_before = 0;
+  if(!charts_are_disks(is_cut, charts_before)) return 0;
+
+  int rerouted = 0;
+  std::vector<int> ring_of(nv, -1);
+  Shortest_paths scratch;
+  for(const Seam_path& old_path : seam_paths(surface, is_cut, keep))
+  {
+    const int s = old_path.vertices.front(), t = old_path.vertices.back();
+    if(s == t || old_path.edges.size() < 2) continue;
+    // the corridor: vertices within `rings` rings of the path
+    std::vector<int> corridor = old_path.vertices;
+    for(int v : corridor) ring_of[v] = 0;
+    for(std::size_t i = 0; i < corridor.size(); ++i)
+    {
+      const int v = corridor[i];
+      if(ring_of[v] >= rings) continue;
+      for(int w : neighbors[v])
+        if(ring_of[w] < 0)
+        {
+          ring_of[w] = ring_of[v] + 1;
+          corridor.push_back(w);
+        }
+    }
+    // the vertices a new path may use: in the corridor, on no other seam, off the border
+    std::vector<char> on_this_path(nv, 0);
+    for(int v : old_path.vertices) on_this_path[v] = 1;
+    for(int e : old_path.edges) on_old[e] = 1;
+    const Seam_graph g = seam_graph(surface, is_cut, keep);
+    auto usable = [&](int v) {
+      if(v == s || v == t) return true;
+      if(ring_of[v] < 0 || on_border[v] || g.node[v]) return false;
+      return g.arcs[v].empty() || on_this_path[v];
+    };
+    Edge_graph graph(nv);
+    for(int v : corridor)
+      for(int fe : edges_around[v])
+      {
+        const int e = surface.edge_of[fe], w = surface.edge_target(fe);
+        if(ring_of[w] < 0 || surface.twin[fe] < 0 || rules.is_forbidden(e) || !usable(v) || !usable(w)) continue;
+        if(is_cut[e] && !on_old[e]) continue;
+        if(v < w) graph.add_edge(v, w, e, rules.cost(surface, fe));
+      }
+    for(int v : corridor) ring_of[v] = -1;
+    const std::vector<int> new_edges = graph.shortest_path(s, t, scratch);
+    for(int e : old_path.edges) on_old[e] = 0;
+    if(new_edges.empty()) continue;
+    double old_cost = 0., new_cost = 0.;
+    for(int e : old_path.edges) old_cost += rules.cost(surface, face_edge_of[e]);
+    for(int e : new_edges) new_cost += rules.cost(surface, face_edge_of[e]);
+    if(!(new_cost < (1. - 1e-9) * old_cost)) continue;
+    std::vector<char> trial = is_cut;
+    for(int e : old_path.edges) trial[e] = 0;
+    for(int e : new_edges) trial[e] = 1;
+    int charts_after = 0;
+    if(!charts_are_disks(trial, charts_after) || charts_after != charts_before) continue;
+    is_cut.swap(trial);
+    ++rerouted;
+  }
+  return rerouted;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
