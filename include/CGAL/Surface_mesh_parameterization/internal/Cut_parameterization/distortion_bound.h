@@ -240,10 +240,19 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     if((status = merge_under_bound(surface, unboxed, start.is_cut, state)) != OK) return status;
     if(unboxed.bounding_box_stiffness != settings.bounding_box_stiffness)
     {
+      // (a solve that ends above the bound, where a border crossed and its
+      // chart was solved again from a Tutte map, is not kept)
       Joint_settings boxed = settings;
       boxed.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
-      if((status = final_solve(boxed, false, state)) != OK) return status;
-      state.distortion = mean_distortion(state.chart, state.x);
+      Joint_state with_box = state;
+      if((status = final_solve(boxed, false, with_box)) != OK) return status;
+      with_box.distortion = mean_distortion(with_box.chart, with_box.x);
+      if(with_box.distortion <= bound) state = std::move(with_box);
+      else
+      {
+        state.newton_iterations = with_box.newton_iterations;
+        state.factorizations = with_box.factorizations;
+      }
     }
     newton += state.newton_iterations - before_newton;
     factorizations += state.factorizations - before_factorizations;
