@@ -127,9 +127,9 @@ void check_timings(const SMP::Cut_and_parameterize_result& r, bool completed = t
   EXPECT_TRUE(std::isfinite(t.total) && t.total > 0.) << "total time " << t.total;
   // the phases are disjoint intervals inside the total's
   EXPECT_TRUE(sum <= t.total * (1. + 1e-9) + 1e-6) << "phases " << sum << " s, total " << t.total << " s";
-  EXPECT_TRUE(r.number_of_factorizations >= r.newton_iterations);
   if(completed)
   {
+    EXPECT_TRUE(r.number_of_factorizations > 0); // at least the first direction and the converged one
     EXPECT_TRUE(r.newton_iterations > 0);
     EXPECT_TRUE(t.initialization > 0. && t.final_solve > 0.);
   }

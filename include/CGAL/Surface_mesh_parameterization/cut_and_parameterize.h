@@ -52,8 +52,9 @@ struct Cut_and_parameterize_result
   std::size_t number_of_charts = 0;    ///< connected components of the cut mesh
   std::size_t number_of_seam_edges = 0;///< seam edges (mesh boundary excluded)
   std::size_t newton_iterations = 0;   ///< total projected Newton iterations
-  /// numeric Cholesky factorizations of the Newton Hessians (at least one per
-  /// iteration; the Tutte and v solves, one factorization each, not counted)
+  /// numeric Cholesky factorizations of the Newton Hessians (below 8,000
+  /// unknowns an iteration may reuse the last one, fewer than one per
+  /// iteration then; the Tutte and v solves, one factorization each, not counted)
   std::size_t number_of_factorizations = 0;
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV

@@ -1,8 +1,9 @@
 // Projected Newton minimization of a sum of energy terms over UV coordinates.
 // The sparsity pattern and its symbolic factorization are set up at the
 // first minimization and again only when a term changes its elements; each
-// iteration assembles, factorizes, solves, caps the step so that no term
-// becomes inadmissible (no face flips), then backtracks (Armijo).
+// iteration assembles, factorizes (or solves by conjugate gradients
+// preconditioned by the last factorization, reuse_factor()), caps the step so
+// that no term becomes inadmissible (no face flips), then backtracks (Armijo).
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 
@@ -35,9 +36,10 @@ struct Newton_report
 {
   Newton_status status = Newton_status::CONVERGED;
   int iterations = 0;
-  /// numeric Cholesky factorizations of the Hessian, never fewer than
-  /// `iterations`: one per iteration, one for the direction found converged
-  /// (or not followed, STALLED), and the retries with a larger diagonal shift
+  /// numeric Cholesky factorizations of the Hessian: one per iteration whose
+  /// direction did not come from the last factorization (reuse_factor()),
+  /// one for the direction found converged (or not followed, STALLED), and
+  /// the retries with a larger diagonal shift
   int factorizations = 0;
   double initial_energy = 0.;
   double energy = 0.;
@@ -53,6 +55,9 @@ class Projected_newton_solver
   bool pattern_built_ = false;
 
   Eigen::Index ordered_entries_ = 0; // entries of the pattern last ordered
+  bool have_factor_ = false;
+  bool inexact_ = false;             // the last direction came from reuse_factor()         // cholesky_ holds a factorization of a Hessian of this pattern
+  Eigen::VectorXd cg_r_, cg_z_, cg_p_, cg_q_;
 
   /// With `added` (elements were only added since the last pattern), the
   /// fill-reducing ordering is kept unless the pattern grew by more than 2%
@@ -69,6 +74,7 @@ class Projected_newton_solver
     if(!keep) ordered_entries_ = entries;
     cholesky_.analyze(hessian_.matrix(), 2, keep); // unknowns (u, v) of each UV vertex ordered together
     pattern_built_ = true;
+    have_factor_ = false;
   }
 
   /// Lets every term update itself at x; true if an energy value changed.
@@ -118,7 +124,18 @@ public:
         report.status = Newton_status::LINEAR_SOLVE_FAILED;
         return report;
       }
-      const double slope = gradient.dot(direction);
+      double slope = gradient.dot(direction);
+      if(!(-slope > settings.tolerance * settings.energy_scale) && inexact_)
+      {
+        // an inexact direction underestimates the decrease: decide on the exact one
+        have_factor_ = false;
+        if(!newton_direction(x, gradient, direction, report.factorizations))
+        {
+          report.status = Newton_status::LINEAR_SOLVE_FAILED;
+          return report;
+        }
+        slope = gradient.dot(direction);
+      }
       if(!(-slope > settings.tolerance * settings.energy_scale))
       {
         report.status = Newton_status::CONVERGED;
@@ -146,13 +163,59 @@ private:
     // the factorization still fails.
     double shift = 1e-9 * (std::max)(hessian_.mean_diagonal(), 1e-300);
     hessian_.add_to_diagonal(shift);
+    inexact_ = have_factor_ && cholesky_.solves_are_cheap() && reuse_factor(gradient, direction);
+    if(inexact_) return true;
+    have_factor_ = false;
     for(int attempt = 0; attempt < 6; ++attempt)
     {
       ++factorizations;
       if(cholesky_.factorize(hessian_.matrix()) && cholesky_.solve(-gradient, direction))
-        return true;
+        return have_factor_ = true;
       hessian_.add_to_diagonal(99. * shift);
       shift *= 100.;
+    }
+    return false;
+  }
+
+  /// Conjugate gradients on H d = -g preconditioned by the factorization of
+  /// an earlier Hessian of the same pattern (the last one factorized); false
+  /// if they do not reach a residual of reuse_tolerance |g| within
+  /// reuse_iterations (the caller then factorizes H).
+  ///
+  /// An inexact Newton step: within one minimization the Hessian changes
+  /// little from one iteration to the next, and with the simplicial solvers
+  /// a solve costs a fraction of a factorization. Measured on the 20 meshes
+  /// of the benchmark (2 cores, with the box solved under the border barrier
+  /// at once, see final_solve()): factorizations of bunnyhead 275 -> 124;
+  /// geometric-mean speedup over the published code 3.36x -> 3.90x, every
+  /// target met as before, E_d within 0.02 (planck1 4.609 -> 4.631, hand_1_i_f5000
+  /// 4.149 -> 4.139). Tighter settings (1e-3 in 12 iterations) needed 6-12
+  /// iterations per step, as much as a factorization at 3k unknowns.
+  /// Convergence is never decided on an inexact direction (minimize()).
+  static constexpr int reuse_iterations = 3;
+  static constexpr double reuse_tolerance = 0.2;
+  bool reuse_factor(const Eigen::VectorXd& gradient, Eigen::VectorXd& direction)
+  {
+    const auto H = hessian_.matrix().template selfadjointView<Eigen::Lower>();
+    const double target = reuse_tolerance * gradient.norm();
+    direction.setZero(gradient.size());
+    cg_r_ = -gradient;
+    if(!cholesky_.solve(cg_r_, cg_z_)) return false;
+    cg_p_ = cg_z_;
+    double rz = cg_r_.dot(cg_z_);
+    for(int k = 0; k < reuse_iterations; ++k)
+    {
+      cg_q_ = H * cg_p_;
+      const double pq = cg_p_.dot(cg_q_);
+      if(!(pq > 0.)) return false;
+      const double alpha = rz / pq;
+      direction += alpha * cg_p_;
+      cg_r_ -= alpha * cg_q_;
+      if(cg_r_.norm() <= target) return true;
+      if(!cholesky_.solve(cg_r_, cg_z_)) return false;
+      const double rz_next = cg_r_.dot(cg_z_);
+      cg_p_ = cg_z_ + (rz_next / rz) * cg_p_;
+      rz = rz_next;
     }
     return false;
   }

@@ -316,6 +316,12 @@ public:
     with_simplicial_solver([&](auto& s) { s.analyzePattern(permuted_); });
   }
 
+  /// True where a solve costs a small fraction of a factorization (the
+  /// simplicial solvers), so that an old factorization pays as a
+  /// preconditioner; CHOLMOD's supernodal factorization is fast and its
+  /// solves are not (Projected_newton_solver::reuse_factor()).
+  bool solves_are_cheap() const { return method_ != Method::CHOLMOD; }
+
   /// Numeric factorization of a matrix with the analyzed pattern.
   bool factorize(const Sparse_matrix& A)
   {

@@ -50,15 +50,7 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
 {
   const double bound = settings.distortion_bound;
   if(!settings.seam_merging || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
-  const std::vector<double> ones(state.chart.number_of_faces(), 1.);
-  auto relax = [&](Joint_state& s) {
-    Distortion_minimizer minimizer(s.chart, ones);
-    const Newton_report report = minimizer.minimize(s.x, settings.merge.newton_iterations, settings.constrained_tolerance);
-    s.newton_iterations += report.iterations;
-    s.factorizations += report.factorizations;
-    s.distortion = mean_distortion(s.chart, s.x);
-    return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  };
+  auto relax = [&](Joint_state& s) { return relax_map(settings.merge.newton_iterations, settings.constrained_tolerance, s); };
   Joint_state merged = state;
   Error_code status = relax(merged); // the baseline: the map without box
   if(status != OK) return status;
