@@ -146,7 +146,7 @@ TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)
   ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
   ASSERT_EQ(ic::number_of_flipped_faces(state.chart, state.x), 0);
   // the slit's copies of the vertex next to the tip are apart in the Tutte map
-  const std::vector<ic::Seam_branch> branches = ic::seam_branches(g.surface, state.is_cut, {});
+  const std::vector<ic::Seam_path> branches = ic::seam_branches(g.surface, state.is_cut, {});
   ASSERT_EQ(branches.size(), std::size_t(1));
   ASSERT_EQ(branches[0].vertices.front(), g.vertex(6, 6));
 
@@ -182,7 +182,7 @@ TEST(Seam_shortening, springs_close_the_gap_and_keep_faces_valid)
   ic::UV_vector x;
   ASSERT_TRUE(ic::disk_charts_embedding(chart, x) == ic::Embedding_status::OK);
   // the pairs: the copies of each slit vertex but the tip
-  std::vector<ic::Seam_branch> branches = ic::seam_branches(g.surface, cut, {});
+  std::vector<ic::Seam_path> branches = ic::seam_branches(g.surface, cut, {});
   ASSERT_EQ(branches.size(), std::size_t(1));
   ic::Chart_mesh uncut;
   std::vector<int> uncut_corner_uv;

@@ -55,8 +55,8 @@ class Projected_newton_solver
   bool pattern_built_ = false;
 
   Eigen::Index ordered_entries_ = 0; // entries of the pattern last ordered
-  bool have_factor_ = false;
-  bool inexact_ = false;             // the last direction came from reuse_factor()         // cholesky_ holds a factorization of a Hessian of this pattern
+  bool have_factor_ = false;         // cholesky_ holds a factorization of a Hessian of this pattern
+  bool inexact_ = false;             // the last direction came from reuse_factor()
   Eigen::VectorXd cg_r_, cg_z_, cg_p_, cg_q_;
 
   /// With `added` (elements were only added since the last pattern), the

@@ -36,13 +36,34 @@ struct Bound_search_settings
                         // duck1 E_s 1.69 -> 1.34, planck1 2.50 -> 2.27, face_f10000 2.30 -> 2.35; 3-10% more time)
 };
 
-/// Seams of the solved cut mesh in `state`, whose E_d is within the bound,
-/// zipped back (seam_merging.h) while the map stays within it: each zip is
-/// judged after a few Newton iterations without box and border barrier
-/// (Merge_settings), against the bound less the box's share of E_d; then the
-/// final solve runs again (crossing check, box within the bound). If that
-/// ends above the bound (a chart whose border crossed is solved again from
-/// its Tutte map), the zips are undone from the last, halving their number
+/// The final solve of `candidate` (from a Tutte map or from its own map),
+/// with the box only within `settings.distortion_bound`; `state` becomes the
+/// result if its E_d is within the bound (`kept`), else takes only its
+/// Newton counts. A chart whose border crossed is solved again from its
+/// Tutte map, which may end above the bound.
+inline Error_code solve_within_bound(const Joint_settings& settings, bool from_tutte_map, Joint_state candidate,
+                                     Joint_state& state, bool& kept)
+{
+  Joint_settings bounded = settings;
+  bounded.bounding_box_distortion_ceiling = (std::min)(settings.distortion_bound, settings.bounding_box_distortion_ceiling);
+  const Error_code status = final_solve(bounded, from_tutte_map, candidate);
+  if(status != OK) return status;
+  candidate.distortion = mean_distortion(candidate.chart, candidate.x);
+  kept = candidate.distortion <= settings.distortion_bound;
+  if(kept) state = std::move(candidate);
+  else
+  {
+    state.newton_iterations = candidate.newton_iterations;
+    state.factorizations = candidate.factorizations;
+  }
+  return OK;
+}
+
+/// Seams of the solved cut mesh in `state` (no box), whose E_d is within the
+/// bound, zipped back (seam_merging.h) while the map stays within it: each
+/// zip is judged after a few Newton iterations without box and border
+/// barrier (Merge_settings); then the final solve runs again. If that ends
+/// above the bound, the zips are undone from the last, halving their number
 /// (at most three final solves); with none left, `state` is left as it was.
 /// The edges flagged in `keep` stay cut.
 template <typename Surface>
@@ -53,34 +74,21 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
   if(!settings.seam_merging || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
   auto relax = [&](Joint_state& s) { return relax_map(settings.merge.newton_iterations, settings.constrained_tolerance, s); };
   Joint_state merged = state;
-  Error_code status = relax(merged); // the baseline: the map without box
-  if(status != OK) return status;
-  const double stop_at = bound - (std::max)(0., state.distortion - merged.distortion);
   std::vector<Merge_step> steps;
-  if(merged.distortion < stop_at)
-    status = merge_greedily(surface, settings.merge, keep, relax,
-                            [&](double, double after) { return after <= stop_at; }, merged, steps);
+  Error_code status = merge_greedily(surface, settings.merge, keep, relax,
+                                     [&](double, double after) { return after <= bound; }, merged, steps);
   if(status != OK) return status;
-  Joint_settings final_settings = settings;
-  final_settings.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
-  for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < 3; k /= 2, ++tries)
-  {
-    Joint_state solved = merged;
-    solved.is_cut = steps[k - 1].is_cut;
-    solved.x = steps[k - 1].x;
-    build_chart_mesh(surface, solved.is_cut, solved.chart, solved.corner_uv);
-    if((status = final_solve(final_settings, false, solved)) != OK) return status;
-    solved.distortion = mean_distortion(solved.chart, solved.x);
-    merged.newton_iterations = solved.newton_iterations;
-    merged.factorizations = solved.factorizations;
-    if(solved.distortion <= bound)
-    {
-      state = std::move(solved);
-      return OK;
-    }
-  }
   state.newton_iterations = merged.newton_iterations; // the trials' work
   state.factorizations = merged.factorizations;
+  bool kept = false;
+  for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < 3 && !kept; k /= 2, ++tries)
+  {
+    Joint_state candidate = state;
+    candidate.is_cut = steps[k - 1].is_cut;
+    candidate.x = steps[k - 1].x;
+    build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
+    if((status = solve_within_bound(settings, false, std::move(candidate), state, kept)) != OK) return status;
+  }
   return OK;
 }
 
@@ -94,23 +102,12 @@ Error_code straighten_under_bound(const Surface& surface, const Joint_settings& 
   const double bound = settings.distortion_bound;
   const int rings = settings.seam_straightening_rings;
   if(rings <= 0 || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
-  Joint_state s = state;
-  const int rerouted = straighten_seams(surface, s.rules, keep, rings, s.is_cut);
-  if(rerouted == 0) return OK;
-  build_chart_mesh(surface, s.is_cut, s.chart, s.corner_uv);
-  if(disk_charts_embedding(s.chart, s.x) != Embedding_status::OK) return OK;
-  Joint_settings final_settings = settings;
-  final_settings.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
-  const Error_code status = final_solve(final_settings, true, s);
-  if(status != OK) return status;
-  s.distortion = mean_distortion(s.chart, s.x);
-  if(s.distortion <= bound) state = std::move(s);
-  else
-  {
-    state.newton_iterations = s.newton_iterations;
-    state.factorizations = s.factorizations;
-  }
-  return OK;
+  Joint_state candidate = state;
+  if(straighten_seams(surface, candidate.rules, keep, rings, candidate.is_cut) == 0) return OK;
+  build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
+  if(disk_charts_embedding(candidate.chart, candidate.x) != Embedding_status::OK) return OK;
+  bool kept = false;
+  return solve_within_bound(settings, true, std::move(candidate), state, kept);
 }
 
 /// joint_optimization() under `settings.distortion_bound` (> 0): fills
@@ -231,21 +228,10 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     Scoped_timer merging(timings.final_solve);
     if((status = straighten_under_bound(surface, unboxed, start.is_cut, state)) != OK) return status;
     if((status = merge_under_bound(surface, unboxed, start.is_cut, state)) != OK) return status;
-    if(unboxed.bounding_box_stiffness != settings.bounding_box_stiffness)
+    if(settings.bounding_box_stiffness > 0.)
     {
-      // (a solve that ends above the bound, where a border crossed and its
-      // chart was solved again from a Tutte map, is not kept)
-      Joint_settings boxed = settings;
-      boxed.bounding_box_distortion_ceiling = (std::min)(bound, settings.bounding_box_distortion_ceiling);
-      Joint_state with_box = state;
-      if((status = final_solve(boxed, false, with_box)) != OK) return status;
-      with_box.distortion = mean_distortion(with_box.chart, with_box.x);
-      if(with_box.distortion <= bound) state = std::move(with_box);
-      else
-      {
-        state.newton_iterations = with_box.newton_iterations;
-        state.factorizations = with_box.factorizations;
-      }
+      bool kept = false;
+      if((status = solve_within_bound(settings, false, state, state, kept)) != OK) return status;
     }
     newton += state.newton_iterations - before_newton;
     factorizations += state.factorizations - before_factorizations;

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
 
 #include <algorithm>
 #include <array>
@@ -53,57 +54,6 @@ struct Merge_step
   std::vector<char> is_cut;
   UV_vector x;
 };
-
-/// A stretch of seam from a tip: its surface edges and vertices in order
-/// (vertices[0] is the tip, vertices[i+1] the far end of edges[i]).
-struct Seam_branch
-{
-  std::vector<int> edges;
-  std::vector<int> vertices;
-};
-
-/// The branches of the seams (interior cut edges) that start at a tip; the
-/// edges flagged in `keep` (the user's seams) are never part of one.
-template <typename Surface>
-std::vector<Seam_branch> seam_branches(const Surface& surface, const std::vector<char>& is_cut,
-                                       const std::vector<char>& keep)
-{
-  const int nv = int(surface.number_of_vertices());
-  std::vector<std::vector<std::array<int, 2>>> seam(nv); // (edge, other vertex)
-  std::vector<char> on_border(nv, 0), kept_seam(nv, 0);
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-  {
-    const int a = surface.edge_source(fe), b = surface.edge_target(fe), e = surface.edge_of[fe];
-    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
-    else if(surface.twin[fe] > fe && is_cut[e])
-    {
-      if(is_flagged(keep, e)) { kept_seam[a] = kept_seam[b] = 1; continue; }
-      seam[a].push_back({e, b});
-      seam[b].push_back({e, a});
-    }
-  }
-  std::vector<Seam_branch> branches;
-  for(int tip = 0; tip < nv; ++tip)
-  {
-    if(seam[tip].size() != 1 || on_border[tip] || kept_seam[tip]) continue;
-    Seam_branch branch;
-    branch.vertices.push_back(tip);
-    int v = tip, from_edge = -1;
-    for(;;)
-    {
-      const auto& next = seam[v][0][0] != from_edge ? seam[v][0] : seam[v][1];
-      branch.edges.push_back(next[0]);
-      branch.vertices.push_back(next[1]);
-      from_edge = next[0];
-      v = next[1];
-      if(seam[v].size() != 2 || on_border[v] || kept_seam[v] || v == tip) break;
-    }
-    // a seam that is one path with two tips is found from both ends: once is enough
-    if(seam[v].size() == 1 && !on_border[v] && !kept_seam[v] && v < tip) continue;
-    branches.push_back(std::move(branch));
-  }
-  return branches;
-}
 
 /// The mean of the distinct UV vertices of `from` (corners `from_corner_uv`)
 /// that each UV vertex of `to` joins (corners `to_corner_uv`); `pairs` gets
@@ -195,7 +145,7 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
   std::set<int> done; // tips whose branch was tried to the end
   for(int trials = 0; trials < merge.max_trials;)
   {
-    const std::vector<Seam_branch> branches = seam_branches(surface, state.is_cut, keep);
+    const std::vector<Seam_path> branches = seam_branches(surface, state.is_cut, keep);
     const std::vector<double> excess = vertex_distortion_excess(surface, state.chart, state.x);
     // the branch around which the map is least distorted, per unit of its length
     int best = -1;
@@ -209,7 +159,7 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
       if(best < 0 || density < best_density) { best = b; best_density = density; }
     }
     if(best < 0) break;
-    const Seam_branch& branch = branches[best];
+    const Seam_path& branch = branches[best];
     done.insert(branch.vertices.front());
     bool zipped_some = false;
     std::size_t k = branch.edges.size();

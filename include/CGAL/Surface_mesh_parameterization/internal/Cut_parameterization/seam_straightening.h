@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
 
 #include <array>
 #include <vector>
@@ -27,78 +28,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
-
-/// A seam between two nodes: its surface edges and vertices in order
-/// (vertices[i], vertices[i+1] are the ends of edges[i]).
-struct Seam_path
-{
-  std::vector<int> edges;
-  std::vector<int> vertices;
-};
-
-/// The seam graph of `is_cut` (interior cut edges, those flagged in `keep`
-/// left out) on the surface's vertices: per vertex, its (edge, other
-/// vertex) pairs; `node` flags the vertices where paths end.
-struct Seam_graph
-{
-  std::vector<std::vector<std::array<int, 2>>> arcs;
-  std::vector<char> node;
-};
-
-template <typename Surface>
-Seam_graph seam_graph(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& keep)
-{
-  const int nv = int(surface.number_of_vertices());
-  Seam_graph g;
-  g.arcs.assign(nv, {});
-  g.node.assign(nv, 0);
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-  {
-    const int a = surface.edge_source(fe), b = surface.edge_target(fe), e = surface.edge_of[fe];
-    if(surface.twin[fe] < 0 || (is_cut[e] && is_flagged(keep, e))) g.node[a] = g.node[b] = 1;
-    else if(surface.twin[fe] > fe && is_cut[e])
-    {
-      g.arcs[a].push_back({e, b});
-      g.arcs[b].push_back({e, a});
-    }
-  }
-  for(int v = 0; v < nv; ++v)
-    if(!g.arcs[v].empty() && g.arcs[v].size() != 2) g.node[v] = 1;
-  return g;
-}
-
-/// The paths of the seam graph from node to node (closed loops through no
-/// node are left out: nothing fixes their ends).
-template <typename Surface>
-std::vector<Seam_path> seam_paths(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& keep)
-{
-  const Seam_graph g = seam_graph(surface, is_cut, keep);
-  std::vector<char> used(surface.edges.size(), 0);
-  std::vector<Seam_path> paths;
-  for(int start = 0; start < int(g.arcs.size()); ++start)
-  {
-    if(!g.node[start]) continue;
-    for(const auto& first : g.arcs[start])
-    {
-      if(used[first[0]]) continue;
-      Seam_path path;
-      path.vertices.push_back(start);
-      int e = first[0], v = first[1];
-      for(;;)
-      {
-        used[e] = 1;
-        path.edges.push_back(e);
-        path.vertices.push_back(v);
-        if(g.node[v]) break;
-        const auto& next = g.arcs[v][0][0] != e ? g.arcs[v][0] : g.arcs[v][1];
-        e = next[0];
-        v = next[1];
-      }
-      paths.push_back(std::move(path));
-    }
-  }
-  return paths;
-}
 
 /// Reroutes the seams of `is_cut` (see the file's comment); the edges
 /// flagged in `keep` stay as they are. Returns the number of paths
@@ -109,13 +38,12 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
 {
   const int nv = int(surface.number_of_vertices());
   std::vector<std::vector<int>> neighbors(nv);
-  std::vector<char> on_border(nv, 0), on_old(surface.edges.size(), 0);
+  std::vector<char> on_old(surface.edges.size(), 0);
   std::vector<std::vector<int>> edges_around(nv); // face-edges leaving each vertex
   std::vector<int> face_edge_of(surface.edges.size(), -1);
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)
   {
     const int a = surface.edge_source(fe), b = surface.edge_target(fe);
-    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
     if(surface.twin[fe] < fe) // each edge once
     {
       neighbors[a].push_back(b);
@@ -158,14 +86,15 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
           corridor.push_back(w);
         }
     }
-    // the vertices a new path may use: in the corridor, on no other seam, off the border
+    // the vertices a new path may use: in the corridor, on no other seam, off the
+    // border (the nodes of the seam graph include the border's vertices)
     std::vector<char> on_this_path(nv, 0);
     for(int v : old_path.vertices) on_this_path[v] = 1;
     for(int e : old_path.edges) on_old[e] = 1;
     const Seam_graph g = seam_graph(surface, is_cut, keep);
     auto usable = [&](int v) {
       if(v == s || v == t) return true;
-      if(ring_of[v] < 0 || on_border[v] || g.node[v]) return false;
+      if(ring_of[v] < 0 || g.node[v]) return false;
       return g.arcs[v].empty() || on_this_path[v];
     };
     Edge_graph graph(nv);
