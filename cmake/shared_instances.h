@@ -2,7 +2,7 @@
 // benchmark), not part of the library: the core of cut_and_parameterize()
 // (internal::cut::joint_optimization(), which depends on the mesh type only,
 // not on the property maps or named parameters) is compiled once per common
-// mesh type, in cmake/precompiled_headers.cpp, instead of in every program
+// mesh type, in cmake/shared_instances/*.cpp, instead of in every program
 // that calls it. Included by cmake/precompiled_headers.h; a program copied
 // out of the project compiles without it.
 #ifndef CUT_PARAM_SHARED_INSTANCES_H
@@ -22,7 +22,8 @@
   X(CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>)
 
 // The instance of one mesh type, declared here and defined (without
-// `extern`) in cmake/precompiled_headers.cpp.
+// `extern`) in cmake/shared_instances/ (a file per mesh type: they compile
+// side by side), which must follow CUT_PARAM_FOR_EACH_SHARED_MESH.
 #define CUT_PARAM_SHARED_INSTANCE(KEYWORD, ...)                                                         \
   namespace CGAL { namespace Surface_mesh_parameterization { namespace internal { namespace cut {       \
   KEYWORD template Error_code joint_optimization<Indexed_surface<__VA_ARGS__>>(                         \

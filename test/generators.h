@@ -24,6 +24,8 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
 
 #include <array>
 #include <cmath>
@@ -702,6 +704,20 @@ inline Soup slit_saddle_soup(int rings, int sectors, int slit_from, double ampli
       s.add_triangle(v(i, k), v(i + 1, k + 1), v(i, k + 1));
     }
   return s;
+}
+
+/// A vertex-keyed (one UV per vertex) and a halfedge-keyed (one UV per
+/// corner) dynamic UV map of `mesh`.
+template <typename Mesh>
+auto vertex_uv_map(const Mesh& mesh)
+{
+  return get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+}
+
+template <typename Mesh>
+auto halfedge_uv_map(const Mesh& mesh)
+{
+  return get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
 }
 
 } // namespace cut_test

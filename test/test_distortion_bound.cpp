@@ -23,13 +23,13 @@ TYPED_TEST_SUITE(Distortion_bound, Mesh_types);
 namespace {
 
 // a spherical cap reaching 150 degrees from its pole: seams needed
-Soup bowl() { return sphere_cap_soup(10, 32, 5. * pi / 6.); }
+Soup wide_cap() { return sphere_cap_soup(10, 32, 5. * pi / 6.); }
 
 } // namespace
 
 TYPED_TEST(Distortion_bound, a_reachable_bound_holds)
 {
-  const TypeParam mesh = make_mesh<TypeParam>(bowl());
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
   Cut_run<TypeParam> plain(mesh);
   plain.run();
   check_cut_result(mesh, plain);
@@ -45,7 +45,7 @@ TYPED_TEST(Distortion_bound, a_reachable_bound_holds)
 
 TYPED_TEST(Distortion_bound, a_loose_bound_never_lengthens_the_seams)
 {
-  const TypeParam mesh = make_mesh<TypeParam>(bowl());
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
   Cut_run<TypeParam> plain(mesh);
   plain.run();
   Cut_run<TypeParam> bounded(mesh);
@@ -58,7 +58,7 @@ TYPED_TEST(Distortion_bound, a_loose_bound_never_lengthens_the_seams)
 
 TYPED_TEST(Distortion_bound, an_unreachable_bound_keeps_the_lowest_distortion)
 {
-  const TypeParam mesh = make_mesh<TypeParam>(bowl());
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
   Cut_run<TypeParam> plain(mesh);
   plain.run();
   Cut_run<TypeParam> bounded(mesh);
@@ -72,7 +72,7 @@ TYPED_TEST(Distortion_bound, an_unreachable_bound_keeps_the_lowest_distortion)
 
 TYPED_TEST(Distortion_bound, bounds_below_four_are_refused)
 {
-  const TypeParam mesh = make_mesh<TypeParam>(bowl());
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
   for(double bad : {3.9, -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
   {
     SCOPED_TRACE("bound " + to_text(bad));

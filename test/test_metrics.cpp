@@ -12,18 +12,6 @@ using namespace cut_test;
 namespace {
 
 template <typename Mesh>
-auto vertex_uv_map(const Mesh& mesh)
-{
-  return get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
-}
-
-template <typename Mesh>
-auto halfedge_uv_map(const Mesh& mesh)
-{
-  return get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
-}
-
-template <typename Mesh>
 auto seam_edge_map(const Mesh& mesh)
 {
   auto sem = get(CGAL::dynamic_edge_property_t<bool>(), mesh);

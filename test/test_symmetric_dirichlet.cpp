@@ -221,10 +221,10 @@ TEST(SymmetricDirichlet, signed_svd_reconstructs_the_matrix)
     Matrix2 S = Matrix2::Zero();
     S(0, 0) = svd.s1;
     S(1, 1) = svd.s2;
-    EXPECT_TRUE((svd.U * S * svd.V.transpose() - J).norm() <= 1e-13 * (1. + J.norm()));
-    EXPECT_NEAR(svd.U.determinant(), 1., 1e-13);
-    EXPECT_NEAR(svd.V.determinant(), 1., 1e-13);
-    EXPECT_TRUE((svd.U.transpose() * svd.U - Matrix2::Identity()).norm() < 1e-13);
+    EXPECT_TRUE((svd.U() * S * svd.V().transpose() - J).norm() <= 1e-13 * (1. + J.norm()));
+    EXPECT_NEAR(svd.U().determinant(), 1., 1e-13);
+    EXPECT_NEAR(svd.V().determinant(), 1., 1e-13);
+    EXPECT_TRUE((svd.U().transpose() * svd.U() - Matrix2::Identity()).norm() < 1e-13);
     EXPECT_TRUE(svd.s1 >= std::abs(svd.s2));
     EXPECT_EQ(svd.s2 < 0., J.determinant() < 0.);
   }

@@ -58,12 +58,6 @@ double signed_area(const ic::Chart_mesh& mesh, const ic::UV_vector& x, std::size
   return 0.5 * mesh.uv_edges(x, f).determinant();
 }
 
-template <typename Mesh>
-auto vertex_uv_map(const Mesh& mesh)
-{
-  return get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
-}
-
 /// The lower triangle of a grid Laplacian over side x side nodes with
 /// `diagonal` on its diagonal (positive definite when diagonal > 4).
 ic::Sparse_matrix screened_grid_laplacian(int side, double diagonal)
