@@ -165,29 +165,33 @@ class Sparse_cholesky
 
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
   /// CHOLMOD's fill-reducing ordering of A (its default choice, AMD or
-  /// nested dissection, followed by its postorder), the lower triangle of
-  /// P A P^T in permuted_ with the slot of each value of A, then CHOLMOD's
-  /// supernodal analysis of P A P^T in natural order.
-  void cholmod_analyze_permuted(const Sparse_matrix& input)
+  /// nested dissection, followed by its postorder) unless `keep_order` (the
+  /// last one is used again), the lower triangle of P A P^T in permuted_
+  /// with the slot of each value of A, then CHOLMOD's supernodal analysis of
+  /// P A P^T in natural order.
+  void cholmod_analyze_permuted(const Sparse_matrix& input, bool keep_order)
   {
     const Sparse_matrix& A = compressed(input);
     const int n = int(A.rows());
     cholmod_common& common = cholmod_.cholmod();
-    common.nmethods = 0; // CHOLMOD's default: AMD, nested dissection if AMD fills in a lot
-    common.postorder = 1;
-    common.supernodal = CHOLMOD_SIMPLICIAL; // the ordering only: no supernodal analysis here
-    cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
-    cholmod_factor* ordering = cholmod_analyze(&view, &common);
-    common.supernodal = CHOLMOD_SUPERNODAL;
-    cholmod_inverse_order_.assign(std::size_t(n), 0);
-    if(ordering == nullptr || ordering->Perm == nullptr)
-      for(int i = 0; i < n; ++i) cholmod_inverse_order_[i] = i;
-    else
+    if(!keep_order)
     {
-      const int* order = static_cast<const int*>(ordering->Perm);
-      for(int k = 0; k < n; ++k) cholmod_inverse_order_[order[k]] = k;
+      common.nmethods = 0; // CHOLMOD's default: AMD, nested dissection if AMD fills in a lot
+      common.postorder = 1;
+      common.supernodal = CHOLMOD_SIMPLICIAL; // the ordering only: no supernodal analysis here
+      cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+      cholmod_factor* ordering = cholmod_analyze(&view, &common);
+      common.supernodal = CHOLMOD_SUPERNODAL;
+      cholmod_inverse_order_.assign(std::size_t(n), 0);
+      if(ordering == nullptr || ordering->Perm == nullptr)
+        for(int i = 0; i < n; ++i) cholmod_inverse_order_[i] = i;
+      else
+      {
+        const int* order = static_cast<const int*>(ordering->Perm);
+        for(int k = 0; k < n; ++k) cholmod_inverse_order_[order[k]] = k;
+      }
+      cholmod_free_factor(&ordering, &common);
     }
-    cholmod_free_factor(&ordering, &common);
 
     // lower triangle of P A P^T, rows sorted in each column: a counting sort
     // by row, then a stable one by column
@@ -284,15 +288,19 @@ public:
   /// vertices: 10k unknowns 20 vs 8 ms (AMD), 20k 57 vs 16 ms, 40k 162 vs
   /// 116 ms (METIS); factorizations within 1%.
   ///
-  /// With `keep_ordering`, the simplicial solvers use the ordering of the
-  /// last analysis again (same size): only the symbolic analysis is redone.
-  /// CHOLMOD's ordering is computed again in any case (cholmod_analyze_permuted()):
-  /// giving CHOLMOD the matrix ordered by METIS on the vertices, so that an
-  /// ordering could be kept, was measured on bimba_i_f10000 x 16 (160k
-  /// faces) and gained nothing: its final solve took 120 s either way.
+  /// With `keep_ordering`, the fill-reducing ordering of the last analysis
+  /// (same size) is used again: only the symbolic analysis is redone. For
+  /// CHOLMOD too: on bimba_i_f10000 refined to 640k faces its ordering
+  /// (nested dissection at that size) took 2.7 s, a factorization 3.7 s, and
+  /// the border barrier's new patterns (a few pairs more or fewer) asked for
+  /// 13 orderings in the final solve, 35 s of a 110 s run; keeping them: 8
+  /// orderings fewer, 79 s, the same Newton iterations and E_d. (Giving
+  /// CHOLMOD a matrix ordered by METIS on the vertices instead, measured at
+  /// 160k faces before, gained nothing.)
   void analyze(const Sparse_matrix& A, int block_size = 1, bool keep_ordering = false)
   {
-    if(!(keep_ordering && analyzed_ && method_ != Method::CHOLMOD && permutation_.size() == A.rows()))
+    const bool keep = keep_ordering && analyzed_ && permuted_.rows() == A.rows();
+    if(!keep)
     {
       method_ = Method::AMD;
 #ifdef CGAL_SMP_CUT_USE_METIS
@@ -301,17 +309,17 @@ public:
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
       if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
 #endif
-      analyzed_ = true;
-#ifdef CGAL_SMP_CUT_USE_CHOLMOD
-      if(method_ == Method::CHOLMOD)
-      {
-        Serial_openmp_scope serial;
-        cholmod_analyze_permuted(A);
-        return;
-      }
-#endif
-      order(A, block_size);
     }
+    analyzed_ = true;
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+    if(method_ == Method::CHOLMOD)
+    {
+      Serial_openmp_scope serial;
+      cholmod_analyze_permuted(A, keep);
+      return;
+    }
+#endif
+    if(!keep) order(A, block_size);
     permute(A);
     with_simplicial_solver([&](auto& s) { s.analyzePattern(permuted_); });
   }
