@@ -338,6 +338,41 @@ TYPED_TEST(CutAndParameterizeTyped, user_seams_are_kept)
   EXPECT_TRUE(!border_run.is_seam(border_edge));
 }
 
+// A single inner edge given as a seam, away from the border: alone, no map
+// can open it (the corners on its two sides stay joined at both ends), so
+// it is joined to the border by the cheapest path (check_cut_result() fails
+// on a seam piece floating inside a chart). A flat disk needs no seam of its own.
+TYPED_TEST(CutAndParameterizeTyped, a_lone_user_seam_edge_is_joined_to_the_border)
+{
+  TypeParam mesh;
+  build_mesh(flat_disk_soup(8, 24), mesh);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  auto radius = [&](vertex_t<TypeParam> v) { const auto p = get(vpm, v); return std::hypot(p.x(), p.y()); };
+  // the edge whose midpoint is nearest to the point (0.4, 0) of the unit disk
+  auto lone = *edges(mesh).begin();
+  double best = std::numeric_limits<double>::infinity();
+  for(auto e : edges(mesh))
+  {
+    const auto p = get(vpm, source(e, mesh)), q = get(vpm, target(e, mesh));
+    const double d = std::hypot(0.5 * (p.x() + q.x()) - 0.4, 0.5 * (p.y() + q.y()));
+    if(d < best) { best = d; lone = e; }
+  }
+  ASSERT_FALSE(is_border(source(lone, mesh), mesh) || is_border(target(lone, mesh), mesh));
+  ASSERT_LT(std::max(radius(source(lone, mesh)), radius(target(lone, mesh))), 0.7);
+  Cut_run<TypeParam> run(mesh);
+  run.seam_storage[lone] = true;
+  run.run(SMP::parameters::lambda(20.));
+  check_cut_result(mesh, run);
+  EXPECT_TRUE(run.is_seam(lone));
+  // it opened: the two faces of the edge do not share the UVs of both its ends
+  const auto h = halfedge(lone, mesh), o = opposite(h, mesh);
+  const bool joined_at_target = run.uv(h) == run.uv(prev(o, mesh));
+  const bool joined_at_source = run.uv(prev(h, mesh)) == run.uv(o);
+  EXPECT_FALSE(joined_at_target && joined_at_source);
+  EXPECT_GT(run.result.number_of_seam_edges, std::size_t(1)); // the path to the border came with it
+  EXPECT_EQ(run.result.number_of_charts, std::size_t(1));
+}
+
 TYPED_TEST(CutAndParameterizeTyped, face_lambda_map_keeps_seams_out_of_a_region)
 {
   const Soup soup = bowl();

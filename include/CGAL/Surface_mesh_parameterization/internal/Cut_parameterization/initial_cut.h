@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -188,9 +189,53 @@ bool cut_graph(const Surface& surface, const std::vector<int>& component_faces,
   return true;
 }
 
+/// Joins each lone cut edge to the rest of the cut: an inner cut edge whose
+/// two ends are inner vertices on no other cut edge (a seam given by the
+/// user, for example) leaves the corners on its two sides joined at both
+/// ends, so no map can open it, yet it would count as a seam. The cheapest
+/// path of edges that are not forbidden (`rules`) from one of its ends to a
+/// border or another cut is cut with it. Returns false if one cannot reach
+/// any (a component with no border and no other cut).
+template <typename Surface>
+bool join_lone_cut_edges(const Surface& surface, std::vector<char>& is_cut, const Cut_rules& rules)
+{
+  const int nv = int(surface.number_of_vertices());
+  std::vector<int> cut_degree(nv, 0);
+  std::vector<char> on_border(nv, 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int a = surface.edge_source(fe), b = surface.edge_target(fe);
+    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
+    if(is_cut[surface.edge_of[fe]] && (surface.twin[fe] < 0 || fe < surface.twin[fe])) { ++cut_degree[a]; ++cut_degree[b]; }
+  }
+  auto lone_end = [&](int v) { return cut_degree[v] == 1 && !on_border[v]; };
+  std::vector<int> lone; // one face-edge per lone cut edge
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] > fe && is_cut[surface.edge_of[fe]] && lone_end(surface.edge_source(fe))
+       && lone_end(surface.edge_target(fe)))
+      lone.push_back(fe);
+  if(lone.empty()) return true;
+  std::vector<char> is_lone_end(nv, 0);
+  for(int fe : lone) is_lone_end[surface.edge_source(fe)] = is_lone_end[surface.edge_target(fe)] = 1;
+  std::vector<int> sources;
+  for(int v = 0; v < nv; ++v)
+    if((on_border[v] || cut_degree[v] > 0) && !is_lone_end[v]) sources.push_back(v);
+  std::vector<char> usable(surface.edges.size(), 0);
+  for(std::size_t e = 0; e < usable.size(); ++e) usable[e] = !rules.is_forbidden(int(e));
+  const Shortest_paths paths = surface_edge_graph(surface, usable, rules).shortest_paths(sources);
+  for(int fe : lone)
+  {
+    const int a = surface.edge_source(fe), b = surface.edge_target(fe);
+    const int end = paths.distance[a] <= paths.distance[b] ? a : b;
+    if(!std::isfinite(paths.distance[end])) return false;
+    for(int e : paths.path_edges(end)) is_cut[e] = 1;
+  }
+  return true;
+}
+
 /// Adds cuts, as cheap as `rules` make them and never on a forbidden edge,
 /// so that every chart of the surface cut along `is_cut` is a topological
-/// disk. Returns false if some chart still is not (which the construction
+/// disk and every cut edge opens (join_lone_cut_edges()). Returns false if some chart still is not (which the construction
 /// rules out for manifold input without forbidden edges) or a forbidden edge
 /// would have to be cut; `is_cut` may then hold part of the cuts.
 template <typename Surface>
@@ -210,6 +255,7 @@ bool make_disks(const Surface& surface, std::vector<char>& is_cut, const Cut_rul
                         : cut_graph(surface, faces_of_chart[c], rules, is_cut);
     if(!done) return false;
   }
+  if(!join_lone_cut_edges(surface, is_cut, rules)) return false;
   for(std::size_t e = 0; e < rules.forbidden.size(); ++e)
     if(is_cut[e] && rules.forbidden[e]) return false;
   build_chart_mesh(surface, is_cut, chart, corner_uv);
