@@ -26,8 +26,9 @@ bash scripts/install_dependencies.sh
 # and lines) instead of Debug's -g, whose variable tracking took a third of
 # the compile time; the test files compiled a few at a time into one
 # executable (CUT_PARAM_UNITY_TESTS), so that the library's templates are not
-# compiled again for every file: the build took about 35 minutes on 2 cores
-# before these two, TODO after.
+# compiled again for every file. Measured on 2 cores: one test file 204 s
+# with -g, 112 s with -g1; this whole script about 52 minutes before the two
+# (CI 67 minutes in all), 24.6 after (18 of them building).
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
   -DCUT_PARAM_UNITY_TESTS=ON \
