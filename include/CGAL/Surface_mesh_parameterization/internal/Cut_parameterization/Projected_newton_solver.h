@@ -83,15 +83,14 @@ class Projected_newton_solver
   /// Lets every term update itself at x; true if an energy value changed.
   bool update_terms(const UV_vector& x)
   {
-    bool values = false, elements = false, added = false;
+    bool values = false, pattern = false;
     for(Energy_term* term : terms_)
     {
       const Energy_term::Update u = term->update(x);
       values = values || u != Energy_term::Update::NONE;
-      elements = elements || u == Energy_term::Update::ELEMENTS;
-      added = added || u == Energy_term::Update::MORE_ELEMENTS;
+      pattern = pattern || u == Energy_term::Update::ELEMENTS || u == Energy_term::Update::MORE_ELEMENTS;
     }
-    if(elements || added || !pattern_built_) build_pattern();
+    if(pattern || !pattern_built_) build_pattern();
     return values;
   }
 

@@ -235,8 +235,9 @@ bool join_lone_cut_edges(const Surface& surface, std::vector<char>& is_cut, cons
 
 /// Adds cuts, as cheap as `rules` make them and never on a forbidden edge,
 /// so that every chart of the surface cut along `is_cut` is a topological
-/// disk and every cut edge opens (join_lone_cut_edges()). Returns false if some chart still is not (which the construction
-/// rules out for manifold input without forbidden edges) or a forbidden edge
+/// disk and every cut edge opens (join_lone_cut_edges()). Returns false if
+/// some chart still is not (which the construction rules out for manifold
+/// input without forbidden edges) or a forbidden edge
 /// would have to be cut; `is_cut` may then hold part of the cuts.
 template <typename Surface>
 bool make_disks(const Surface& surface, std::vector<char>& is_cut, const Cut_rules& rules = Cut_rules())
