@@ -223,7 +223,7 @@ std::string verify(const std::string& input, const std::string& obj_file, bool u
   // OBJ read without repair, whose output keeps the file's face order (the
   // triangles of a polygon in its place; tools/mesh_output.h).
   std::vector<mesh_input::Mesh::Face_index> order(faces(mesh).begin(), faces(mesh).end());
-  if(mesh_input::detail::lower_extension(input) == "obj" && !report.face_origin.empty())
+  if(mesh_input::lower_extension(input) == "obj" && !report.face_origin.empty())
     std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
       return report.face_origin[std::size_t(a)] < report.face_origin[std::size_t(b)];
     });

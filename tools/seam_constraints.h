@@ -172,7 +172,7 @@ bool gray_levels(const Mesh& ply, const std::string& name, std::size_t count, st
 inline std::vector<double> face_lambda_from_ply(const std::string& filename, const Mesh& mesh,
                                                 const mesh_input::Input_report& report, const std::string& name)
 {
-  if(mesh_input::detail::lower_extension(filename) != "ply")
+  if(mesh_input::lower_extension(filename) != "ply")
     throw Constraint_error("--lambda-from-ply-property needs a .ply input, not '" + filename + "'");
   if(report.face_origin.empty())
     throw Constraint_error("'" + filename + "' was repaired on reading, so its faces and vertices were renumbered: "

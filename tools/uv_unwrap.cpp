@@ -272,7 +272,7 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
 
 bool is_gltf(const std::string& input)
 {
-  const std::string extension = mesh_input::detail::lower_extension(input);
+  const std::string extension = mesh_input::lower_extension(input);
   return extension == "gltf" || extension == "glb";
 }
 
@@ -289,7 +289,7 @@ void write_output(const std::string& output, const std::string& format, const st
     throw Failure("glTF output needs a glTF input (for other inputs: .obj or .ply)");
   if(format == "ply")
     written = mesh_output::write_ply_with_texcoords(output, mesh, uvmap);
-  else if(mesh_input::detail::lower_extension(input) == "obj" && !report.face_origin.empty())
+  else if(mesh_input::lower_extension(input) == "obj" && !report.face_origin.empty())
   {
     std::string problem;
     written = mesh_output::write_obj_keeping_input(input, output, mesh, uvmap, report.face_origin, problem);
@@ -300,7 +300,7 @@ void write_output(const std::string& output, const std::string& format, const st
       warnings.push_back(w);
     }
   }
-  else if(format == "obj" && mesh_input::detail::lower_extension(input) == "obj")
+  else if(format == "obj" && mesh_input::lower_extension(input) == "obj")
   {
     const std::string w = "the input was repaired: the output has the repaired mesh's numbering, without the "
                           "input's normals, groups and materials";

@@ -1,0 +1,135 @@
+// The input path's entry point: validation and repair (see mesh_input.h).
+#include "detail.h"
+
+namespace mesh_input {
+
+const std::vector<std::string>& input_error_statuses()
+{
+  static const std::vector<std::string> names = {"ERROR_CANNOT_READ", "ERROR_EMPTY_MESH",
+    "ERROR_NON_FINITE_COORDINATE", "ERROR_NON_MANIFOLD", "ERROR_NON_TRIANGULAR_MESH"};
+  return names;
+}
+
+std::string lower_extension(const std::string& filename)
+{
+  std::string ext = std::filesystem::path(filename).extension().string();
+  if(!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+  for(char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+/// Reads, validates and repairs `filename` into `mesh` (cleared first).
+/// Throws Input_error; fills `report` (warnings included) otherwise.
+void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& report)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  mesh.clear();
+  report = Input_report();
+
+  std::vector<Point_3> points;
+  std::vector<detail::Polygon> polygons;
+  {
+    std::vector<File_point> file_points;
+    detail::read_soup(filename, file_points, polygons);
+    for(std::size_t v = 0; v < file_points.size(); ++v)
+    {
+      const File_point& p = file_points[v];
+      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+        detail::fail("ERROR_NON_FINITE_COORDINATE", detail::quoted(filename) + ": vertex " + std::to_string(v) +
+                                                    " has a non-finite coordinate " + detail::format_point(p));
+    }
+    points.reserve(file_points.size());
+    for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());
+  }
+  report.file_vertices = points.size();
+  report.file_faces = polygons.size();
+  if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + " has no faces");
+
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    std::string problem = detail::describe_soup_problem(polygons, points.size());
+    if(problem.empty()) problem = "not a polygon mesh";
+    const std::vector<Point_3> file_points_kept = points; // the repair renumbers `points`
+    PMP::repair_polygon_soup(points, polygons);
+    PMP::orient_polygon_soup(points, polygons);
+    if(polygons.empty())
+      detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + ": no valid face left after repairing (" +
+                                       problem + ")");
+    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+      detail::fail("ERROR_NON_MANIFOLD", detail::quoted(filename) + " is not manifold (" + problem +
+                                         ") and could not be repaired");
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
+    std::map<Point_3, long> vertex_at;
+    for(Mesh::Vertex_index v : vertices(mesh)) vertex_at.emplace(mesh.point(v), long(std::size_t(v)));
+    report.point_vertex.assign(file_points_kept.size(), -1);
+    for(std::size_t i = 0; i < file_points_kept.size(); ++i)
+      if(auto it = vertex_at.find(file_points_kept[i]); it != vertex_at.end()) report.point_vertex[i] = it->second;
+    report.repaired = true;
+    report.warnings.push_back(
+      "not a manifold, consistently oriented mesh (" + problem + "): repaired as a polygon soup (" +
+      std::to_string(report.file_vertices) + " vertices, " + std::to_string(report.file_faces) +
+      " faces -> " + std::to_string(num_vertices(mesh)) + " vertices, " + std::to_string(num_faces(mesh)) +
+      " faces; coincident vertices merged" +
+      (duplicated ? ", " + std::to_string(duplicated) + " non-manifold vertices duplicated" : std::string()) +
+      "); vertex and face indices below refer to the repaired mesh");
+  }
+  else
+  {
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    report.point_vertex.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) report.point_vertex[i] = long(i);
+    report.face_origin.resize(num_faces(mesh));
+    for(std::size_t f = 0; f < report.face_origin.size(); ++f) report.face_origin[f] = f;
+  }
+
+  // Triangulation of the faces with more than 3 vertices.
+  std::size_t first_polygon = 0, first_degree = 0;
+  std::vector<Mesh::Face_index> polygons_to_split;
+  for(Mesh::Face_index f : faces(mesh))
+  {
+    const std::size_t degree = CGAL::halfedges_around_face(mesh.halfedge(f), mesh).size();
+    if(degree == 3) continue;
+    if(polygons_to_split.empty()) { first_polygon = std::size_t(f); first_degree = degree; }
+    polygons_to_split.push_back(f);
+  }
+  if(!polygons_to_split.empty())
+  {
+    const std::size_t before = num_faces(mesh);
+    std::size_t refused = 0;
+    for(Mesh::Face_index f : polygons_to_split)
+    {
+      if(!detail::triangulate_face(f, mesh)) ++refused;
+      if(!report.face_origin.empty()) // the new triangles come from the same polygon
+        report.face_origin.resize(num_faces(mesh), report.face_origin[std::size_t(f)]);
+    }
+    if(!CGAL::is_triangle_mesh(mesh) || !mesh.is_valid(false))
+      detail::fail("ERROR_NON_TRIANGULAR_MESH", detail::quoted(filename) + ": face " +
+                                                std::to_string(first_polygon) + " could not be triangulated");
+    report.triangulated_faces = polygons_to_split.size();
+    report.warnings.push_back(
+      std::to_string(polygons_to_split.size()) + " faces are not triangles (first: face " +
+      std::to_string(first_polygon) + ", " + std::to_string(first_degree) + " vertices): triangulated (" +
+      std::to_string(before) + " -> " + std::to_string(num_faces(mesh)) + " faces" +
+      (refused ? "; " + std::to_string(refused) + " degenerate or self-intersecting polygons split at their first corner"
+               : std::string()) +
+      ")");
+  }
+
+  std::size_t first_isolated = 0;
+  for(Mesh::Vertex_index v : vertices(mesh))
+    if(mesh.is_isolated(v) && report.isolated_vertices++ == 0) first_isolated = std::size_t(v);
+  if(report.isolated_vertices > 0)
+    report.warnings.push_back(std::to_string(report.isolated_vertices) + " isolated vertices (first: vertex " +
+                              std::to_string(first_isolated) + ") are in no face: they get no UV");
+
+  std::size_t first_degenerate = 0;
+  for(Mesh::Face_index f : faces(mesh))
+    if(CGAL::Surface_mesh_parameterization::is_degenerate_face(f, mesh) && report.degenerate_faces++ == 0) first_degenerate = std::size_t(f);
+  if(report.degenerate_faces > 0)
+    report.warnings.push_back(std::to_string(report.degenerate_faces) +
+                              " degenerate faces (zero area or needle; first: face " +
+                              std::to_string(first_degenerate) + "): their shape is clamped");
+}
+
+} // namespace mesh_input
