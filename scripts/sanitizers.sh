@@ -44,5 +44,7 @@ ubsan="halt_on_error=1:print_stacktrace=1"
 export ASAN_OPTIONS="$asan"
 export UBSAN_OPTIONS="$ubsan"
 
+# install_and_find_package only runs CMake (install, then a project that
+# finds the package): nothing for the sanitizers to see.
 cd "$build"
-ctest --output-on-failure -j "$jobs" "$@"
+ctest --output-on-failure -j "$jobs" -E '^install_and_find_package$' "$@"
