@@ -3,13 +3,17 @@
 # (Debug, in build-asan/) and runs it with CTest; any sanitizer report stops
 # the test that triggered it, which then fails.
 #
-#   scripts/sanitizers.sh [extra ctest options...]
+#   scripts/sanitizers.sh [--all] [extra ctest options...]
 #
 # Debug keeps CGAL's and Eigen's assertions on; test/CMakeLists.txt leaves
-# out the heavy tests in Debug, and check_all_meshes only takes the small
-# meshes. Neither the benchmark nor the examples are built (the examples
-# unwrap whole data meshes: about 9 minutes under the sanitizers for nothing
-# the tests do not cover). Suppressions for third-party reports, if any are
+# out the heavy tests in Debug. What runs: the library's tests, uv_unwrap's
+# (its command line on CGAL's data meshes) and the fuzz regressions (the
+# input path). With --all (a person's run; CI's .ci/run goes without, to
+# stay within its time) also the tools' test programs and check_all_meshes
+# (uv_unwrap on the small meshes of the data set and ../shared/meshes):
+# measured on 2 cores, they add about 5 minutes. Neither the benchmark nor
+# the examples are built (the examples unwrap whole data meshes: about 9
+# minutes under the sanitizers for nothing the tests do not cover). Suppressions for third-party reports, if any are
 # ever needed, go to scripts/sanitizers/ (lsan.supp, ubsan.supp).
 set -euo pipefail
 
@@ -17,6 +21,11 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 jobs="$(nproc 2>/dev/null || echo 2)"
 build="${ASAN_BUILD_DIR:-build-asan}"
+tool_tests=OFF
+if [ "${1:-}" = "--all" ]; then
+  tool_tests=ON
+  shift
+fi
 
 bash scripts/install_dependencies.sh
 
@@ -32,7 +41,7 @@ bash scripts/install_dependencies.sh
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
   -DCUT_PARAM_UNITY_TESTS=ON \
-  -DCUT_PARAM_BUILD_BENCHMARK=OFF -DCUT_PARAM_BUILD_EXAMPLES=OFF \
+  -DCUT_PARAM_BUILD_BENCHMARK=OFF -DCUT_PARAM_BUILD_EXAMPLES=OFF -DCUT_PARAM_BUILD_TOOL_TESTS="$tool_tests" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags"
 cmake --build "$build" -j "$jobs"
 
