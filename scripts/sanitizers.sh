@@ -11,9 +11,10 @@
 # input path). With --all (a person's run; CI's .ci/run goes without, to
 # stay within its time) also the tools' test programs and check_all_meshes
 # (uv_unwrap on the small meshes of the data set and ../shared/meshes):
-# measured on 2 cores, they add about 7 minutes (1403 s against 995). Neither the benchmark nor
-# the examples are built (the examples unwrap whole data meshes: about 9
-# minutes under the sanitizers for nothing the tests do not cover). Suppressions for third-party reports, if any are
+# measured on 2 cores, they add about 7 minutes (1403 s against 995).
+# Neither the benchmark nor the examples are built (the examples unwrap
+# whole data meshes: about 9 minutes under the sanitizers for nothing the
+# tests do not cover). Suppressions for third-party reports, if any are
 # ever needed, go to scripts/sanitizers/ (lsan.supp, ubsan.supp).
 set -euo pipefail
 

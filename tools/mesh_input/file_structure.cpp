@@ -1,6 +1,17 @@
 // The structure checks of OFF, PLY and OBJ files (see mesh_input.h).
 #include "detail.h"
 
+#include <CGAL/IO/OFF/File_header_extended_OFF.h>
+#include <CGAL/IO/io.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <ios>
+#include <sstream>
+
 namespace mesh_input {
 namespace detail {
 

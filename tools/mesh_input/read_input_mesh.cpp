@@ -1,7 +1,32 @@
 // The input path's entry point: validation and repair (see mesh_input.h).
 #include "detail.h"
 
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
 namespace mesh_input {
+
+namespace {
+
+std::string format_point(const File_point& p)
+{
+  std::ostringstream out;
+  out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return out.str();
+}
+
+} // namespace
+
 
 const std::vector<std::string>& input_error_statuses()
 {
@@ -36,7 +61,7 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
       const File_point& p = file_points[v];
       if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
         detail::fail("ERROR_NON_FINITE_COORDINATE", detail::quoted(filename) + ": vertex " + std::to_string(v) +
-                                                    " has a non-finite coordinate " + detail::format_point(p));
+                                                    " has a non-finite coordinate " + format_point(p));
     }
     points.reserve(file_points.size());
     for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());

@@ -1,6 +1,13 @@
 // The polygon soup of a file, as CGAL reads it, every index checked (see mesh_input.h).
 #include "detail.h"
 
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <unordered_map>
+
 namespace mesh_input {
 namespace detail {
 

@@ -1,6 +1,23 @@
 // Faces with more than 3 vertices split into triangles (see mesh_input.h).
 #include "detail.h"
 
+// triangulate_faces() on a self-intersecting polygon would print a
+// performance hint of CGAL's constrained triangulation on stderr.
+#ifndef CGAL_NO_CDT_2_WARNING
+#define CGAL_NO_CDT_2_WARNING
+#endif
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
 namespace mesh_input {
 namespace detail {
 
