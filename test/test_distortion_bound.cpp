@@ -2,14 +2,23 @@
 // reaches it (a deep bowl at 4.2), a loose bound never lengthens the seams
 // of the default run, a bound no run reaches (4 on a curved surface, also
 // after the greedy splits that follow the λ search) keeps the lowest E_d
-// found and says so, and bounds below 4 are refused. Every
+// found and says so, and bounds below 4 are refused. The search's trials
+// run two at a time: the result is the same for any number of threads, and
+// a progress callback sees one trial at a time and can cancel. Every
 // result is a valid atlas (check_cut_result()).
 #include "cut_result_checks.h"
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 
+#include <atomic>
+#include <chrono>
+#include <cstring>
 #include <limits>
+#include <thread>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using namespace cut_test;
@@ -81,4 +90,60 @@ TYPED_TEST(Distortion_bound, bounds_below_four_are_refused)
     EXPECT_EQ(run.result.error, SMP::ERROR_WRONG_PARAMETER);
     EXPECT_EQ(run.number_of_seam_edges(), 0u); // outputs untouched
   }
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The search runs its trials in pairs at once; the pair's results are read
+// in order, so the chosen trial and its map do not depend on the threads.
+TYPED_TEST(Distortion_bound, the_result_is_the_same_for_any_number_of_threads)
+{
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
+  std::vector<std::vector<Point_2>> uvs;
+  std::vector<std::vector<char>> seams;
+  std::vector<std::size_t> newton;
+  for(int threads : {1, 2, 4})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    Cut_run<TypeParam> run(mesh);
+    ASSERT_TRUE(run.run(SMP::parameters::distortion_bound(4.2)).ok());
+    check_cut_result(mesh, run);
+    uvs.push_back(run.uv_vector());
+    seams.push_back(run.seam_vector());
+    newton.push_back(run.result.newton_iterations);
+  }
+  for(std::size_t i = 1; i < uvs.size(); ++i)
+  {
+    EXPECT_TRUE(seams[i] == seams[0]);
+    EXPECT_EQ(newton[i], newton[0]);
+    ASSERT_EQ(uvs[i].size(), uvs[0].size());
+    std::size_t differ = 0;
+    for(std::size_t k = 0; k < uvs[0].size(); ++k)
+      if(std::memcmp(&uvs[i][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
+    EXPECT_EQ(differ, std::size_t(0));
+  }
+}
+#endif
+
+TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_can_cancel)
+{
+  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
+  std::atomic<int> inside{0}, overlaps{0}, calls{0};
+  auto watch = [&](const SMP::Cut_and_parameterize_progress&) {
+    if(inside.fetch_add(1) != 0) ++overlaps;
+    std::this_thread::sleep_for(std::chrono::microseconds(200)); // room for another trial to come in
+    ++calls;
+    inside.fetch_sub(1);
+    return true;
+  };
+  Cut_run<TypeParam> run(mesh);
+  ASSERT_TRUE(run.run(SMP::parameters::progress_callback(watch, SMP::parameters::distortion_bound(4.2))).ok());
+  EXPECT_GT(calls.load(), 2 * 12); // several trials of 12 alternations each
+  EXPECT_EQ(overlaps.load(), 0);
+
+  int seen = 0;
+  auto cancel = [&](const SMP::Cut_and_parameterize_progress&) { return ++seen < 20; };
+  Cut_run<TypeParam> canceled(mesh);
+  canceled.run(SMP::parameters::progress_callback(cancel, SMP::parameters::distortion_bound(4.2)));
+  EXPECT_EQ(canceled.result.error, SMP::ERROR_CANCELED);
+  EXPECT_EQ(canceled.number_of_seam_edges(), 0u); // outputs untouched
 }

@@ -42,6 +42,9 @@ struct Joint_state
   std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
   double distortion = 0.;           // E_d of the final map, before packing scales it
+  // chart, x and v hold the initial cut mesh after the alternation's first
+  // u-step (prepare_first_u_step()): the first pass starts at its v-step
+  bool first_u_step_done = false;
   Packing_result packing;
   Joint_timings timings;
 };

@@ -114,8 +114,26 @@ inline std::vector<double> face_distortions(const Chart_mesh& chart, const UV_ve
   return psi;
 }
 
+/// The alternation's u-step number `alternation` (0: the first) with the
+/// weights v² + γ of `state.v`: a Newton minimization from `state.x`, capped
+/// after the first (max_alternation_newton_iterations).
+inline Error_code u_step(const Joint_settings& settings, int alternation, Distortion_minimizer& minimizer,
+                         Joint_state& state)
+{
+  Scoped_timer timer(state.timings.u_steps);
+  for(Eigen::Index f = 0; f < state.v.size(); ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
+  const int cap = alternation == 0 ? settings.max_newton_iterations
+                                    : (std::min)(settings.max_newton_iterations, settings.max_alternation_newton_iterations);
+  const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
+  state.newton_iterations += report.iterations;
+  state.factorizations += report.factorizations;
+  return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+}
+
 /// One pass: the alternation at decreasing ε, then the cut paths from v.
-/// Returns OK, ERROR_CANNOT_SOLVE_LINEAR_SYSTEM or ERROR_CANCELED.
+/// If `state.first_u_step_done`, its first u-step is the one already done
+/// (prepare_first_u_step()). Returns OK, ERROR_CANNOT_SOLVE_LINEAR_SYSTEM or
+/// ERROR_CANCELED.
 template <typename Surface>
 Error_code alternate(const Surface& surface, const std::vector<double>& face_lambda,
                      const Joint_settings& settings, int pass, Joint_state& state,
@@ -130,20 +148,17 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   Discontinuity_solver v_solver(dual_edges(surface, state.is_cut, face_lambda), state.chart.area, face_lambda);
   state.v = Eigen::VectorXd::Ones(nf);
   v_setup.stop();
+  const bool first_done = state.first_u_step_done;
+  state.first_u_step_done = false;
   int alternation = 0;
   for(double eps = settings.epsilon_start; eps > settings.epsilon_end; eps *= 0.5)
     for(int i = 0; i < settings.iterations_per_epsilon; ++i)
     {
-      Scoped_timer u_step(state.timings.u_steps);
-      for(std::size_t f = 0; f < nf; ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
-      const int cap = alternation == 0 ? settings.max_newton_iterations
-                                        : (std::min)(settings.max_newton_iterations,
-                                                     settings.max_alternation_newton_iterations);
-      const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
-      state.newton_iterations += report.iterations;
-      state.factorizations += report.factorizations;
-      u_step.stop();
-      if(!report.ok()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      if(!(alternation == 0 && first_done))
+      {
+        const Error_code status = u_step(settings, alternation, minimizer, state);
+        if(status != OK) return status;
+      }
       Scoped_timer v_step(state.timings.v_steps);
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
@@ -355,12 +370,10 @@ Error_code initial_map(const Surface& surface, Joint_state& state)
   return OK;
 }
 
-/// Where to cut: from `state.is_cut` (seams given by the user), the initial
-/// cut and map, then the passes of the alternation, each cutting along the
-/// paths of v. Leaves the cut mesh and its map (not yet solved) in `state`.
+/// The initial cut and map of `state` (initial_map()), its E_d, and the
+/// progress report "initialize".
 template <typename Surface>
-Error_code decide_cuts(const Surface& surface, const std::vector<double>& face_lambda,
-                       const Joint_settings& settings, Joint_state& state)
+Error_code start_cut_mesh(const Surface& surface, const Joint_settings& settings, Joint_state& state)
 {
   Scoped_timer initialization(state.timings.initialization);
   const Error_code initial = initial_map(surface, state);
@@ -370,6 +383,22 @@ Error_code decide_cuts(const Surface& surface, const std::vector<double>& face_l
   if(settings.progress && !settings.progress({"initialize", 0, 0, settings.alternations_per_pass(),
                                               settings.epsilon_start, state.initial_distortion}))
     return ERROR_CANCELED;
+  return OK;
+}
+
+/// Where to cut: from `state.is_cut` (seams given by the user), the initial
+/// cut and map (unless `state.first_u_step_done`), then the passes of the
+/// alternation, each cutting along the paths of v. Leaves the cut mesh and
+/// its map (not yet solved) in `state`.
+template <typename Surface>
+Error_code decide_cuts(const Surface& surface, const std::vector<double>& face_lambda,
+                       const Joint_settings& settings, Joint_state& state)
+{
+  if(!state.first_u_step_done)
+  {
+    const Error_code initial = start_cut_mesh(surface, settings, state);
+    if(initial != OK) return initial;
+  }
 
   for(int pass = 0; pass < settings.passes; ++pass)
   {
@@ -437,6 +466,41 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   return true;
 }
 
+/// True if optimize_cut_mesh() decides the cuts on a simplified copy.
+template <typename Surface>
+bool cuts_on_coarse_copy(const Surface& surface, const Joint_settings& settings)
+{
+  return settings.multiresolution_faces > 0 && settings.passes > 0
+         && surface.number_of_faces() > 2 * std::size_t(settings.multiresolution_faces);
+}
+
+/// What every run of optimize_cut_mesh() from `state` does first whatever
+/// its λ: the initial cut and map, and the alternation's first u-step, whose
+/// weights are v² + γ with v = 1 (λ enters at the first v-step). Sets
+/// `state.first_u_step_done`, so that the runs from `state` start at the
+/// first v-step; a λ search (distortion_bound.h) does this once for all its
+/// trials. Leaves `state` as it was where the cuts are decided on a
+/// simplified copy (cuts_on_coarse_copy()) or there is no pass.
+template <typename Surface>
+Error_code prepare_first_u_step(const Surface& surface, const std::vector<double>& input_face_lambda,
+                                const Joint_settings& settings, Joint_state& state)
+{
+  if(!settings.valid()) return ERROR_WRONG_PARAMETER;
+  if(settings.passes == 0 || cuts_on_coarse_copy(surface, settings)) return OK;
+  const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
+  state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
+  const Error_code status = start_cut_mesh(surface, settings, state);
+  if(status != OK) return status;
+  state.v = Eigen::VectorXd::Ones(Eigen::Index(surface.number_of_faces()));
+  Scoped_timer setup(state.timings.u_steps);
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(surface.number_of_faces(), 1.));
+  setup.stop();
+  const Error_code first = u_step(settings, 0, minimizer, state);
+  if(first != OK) return first;
+  state.first_u_step_done = true;
+  return OK;
+}
+
 /// The method from `state.is_cut` (seams given by the user) up to the
 /// solved cut mesh: where to cut (on a simplified copy for large meshes),
 /// the final solve, the greedy splits; `state.distortion` is its E_d. The
@@ -449,8 +513,7 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
   state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
   Error_code status = OK;
-  const bool coarse = settings.multiresolution_faces > 0 && settings.passes > 0
-                      && surface.number_of_faces() > 2 * std::size_t(settings.multiresolution_faces)
+  const bool coarse = cuts_on_coarse_copy(surface, settings)
                       && decide_cuts_on_coarse_copy(surface, face_lambda, settings, state, status);
   if(!coarse) status = decide_cuts(surface, face_lambda, settings, state);
   if(status != OK) return status;

@@ -1,6 +1,7 @@
-// Runs an index loop on all cores when TBB is linked (CGAL_LINKED_WITH_TBB),
-// serially otherwise. Callers write to per-index slots only, so results do
-// not depend on the number of threads.
+// Runs an index loop, or two tasks, on all cores when TBB is linked
+// (CGAL_LINKED_WITH_TBB), serially otherwise. Callers write to per-index
+// slots (or per-task results) only, so results do not depend on the number
+// of threads.
 #ifndef CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
 #define CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
 
@@ -8,6 +9,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #endif
 
 namespace CGAL {
@@ -25,6 +27,19 @@ void parallel_for(std::size_t n, const Function& function)
                     });
 #else
   for(std::size_t i = 0; i < n; ++i) function(i);
+#endif
+}
+
+/// Runs f() and g(), at once where TBB is linked, one after the other
+/// otherwise. They must not share what they write.
+template <typename F, typename G>
+void parallel_invoke(const F& f, const G& g)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_invoke(f, g);
+#else
+  f();
+  g();
 #endif
 }
 
