@@ -16,7 +16,8 @@
 // is then solved again (by the caller) and the zip kept if the rule of the
 // caller accepts the distortion it leaves.
 //
-// Each branch is tried whole, then halved (5 lengths at most, down to one edge);
+// Each branch is tried whole, then halved (5 lengths at most, down to one
+// edge; two lengths at a time on two cores, the first accepted kept);
 // branches are taken where the map is least distorted first (the
 // distortion there is what the seam relieves).
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_MERGING_H
@@ -26,6 +27,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
@@ -161,28 +163,60 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     if(best < 0) break;
     const Seam_path& branch = branches[best];
     done.insert(branch.vertices.front());
-    bool zipped_some = false;
-    std::size_t k = branch.edges.size();
-    for(int attempt = 0; attempt < 5 && k >= 1 && trials < merge.max_trials && !zipped_some;
-        ++attempt, k = k == 1 ? 0 : (k + 1) / 2)
+    // the lengths tried from the tip: whole, then halved
+    std::vector<std::size_t> lengths;
+    for(std::size_t k = branch.edges.size(); lengths.size() < 5 && k >= 1; k = k == 1 ? 0 : (k + 1) / 2)
+      lengths.push_back(k);
+    // Each length is zipped and solved from the same state: two at a time, at
+    // once (parallel_invoke()), read in order; the first one accepted is
+    // kept, as if they had been tried one after the other. The second of a
+    // pair is solved even when the first is kept (its Newton work counts),
+    // so the counts do not depend on the number of threads either.
+    struct Attempt
     {
+      bool zipped = false;
+      Error_code status = OK;
       Joint_state trial;
-      if(!zip_seam(surface, state, std::vector<int>(branch.edges.begin(), branch.edges.begin() + k), trial)) continue;
-      ++trials;
-      const Error_code status = solve(trial);
-      if(status != OK) return status;
-      if(accept(state.distortion, trial.distortion))
-      {
-        state = std::move(trial);
-        zipped_some = true;
-        kept.push_back({state.is_cut, state.x});
-      }
+    };
+    auto attempt = [&](std::size_t k, Attempt& a) {
+      a.zipped = zip_seam(surface, state, std::vector<int>(branch.edges.begin(), branch.edges.begin() + k), a.trial);
+      if(a.zipped) a.status = solve(a.trial);
+    };
+    const std::size_t newton_before = state.newton_iterations, factorizations_before = state.factorizations;
+    std::size_t newton_work = 0, factorization_work = 0; // of the attempts not kept
+    bool zipped_some = false;
+    for(std::size_t i = 0; i < lengths.size() && trials < merge.max_trials && !zipped_some; i += 2)
+    {
+      std::array<Attempt, 2> pair;
+      if(i + 1 < lengths.size())
+        parallel_invoke([&] { attempt(lengths[i], pair[0]); }, [&] { attempt(lengths[i + 1], pair[1]); });
       else
+        attempt(lengths[i], pair[0]);
+      for(std::size_t j = 0; j < 2 && i + j < lengths.size(); ++j)
       {
-        state.newton_iterations = trial.newton_iterations; // the work was done anyway
-        state.factorizations = trial.factorizations;
+        Attempt& a = pair[j];
+        const bool tried = a.zipped && !zipped_some && trials < merge.max_trials;
+        if(tried)
+        {
+          ++trials;
+          if(a.status != OK) return a.status;
+          if(accept(state.distortion, a.trial.distortion))
+          {
+            state = std::move(a.trial);
+            zipped_some = true;
+            kept.push_back({state.is_cut, state.x});
+            continue;
+          }
+        }
+        if(a.zipped) // the work was done anyway
+        {
+          newton_work += a.trial.newton_iterations - newton_before;
+          factorization_work += a.trial.factorizations - factorizations_before;
+        }
       }
     }
+    state.newton_iterations += newton_work;
+    state.factorizations += factorization_work;
   }
   return OK;
 }
