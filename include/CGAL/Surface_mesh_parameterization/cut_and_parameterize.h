@@ -307,8 +307,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     λ halved (at most 6 times) until E_d is within the bound, or doubled (at
 ///     most 3 times) while it is, then two rounds that cut the interval
 ///     between passing and failing λ in three; the runs go two at a time, at
-///     once where TBB is linked (the result does not depend on the number of
-///     threads; a progress callback is called by one run at a time). The
+///     once where TBB is linked and the mesh has at most 250,000 faces (the
+///     result does not depend on the number of threads; a progress callback
+///     is called by one run at a time). The
 ///     result is the run within the bound with the shortest seams. If no run
 ///     reaches the bound, cuts are added greedily (see below) to the least
 ///     distorted run and to the run at the given λ; if neither reaches it, the result with the
