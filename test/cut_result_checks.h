@@ -28,6 +28,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -106,6 +107,22 @@ struct Cut_run
     return n;
   }
 };
+
+/// Asserts that every run of `seams` and `uvs` (seam_vector(), uv_vector())
+/// gave the first one's outputs, bit for bit.
+inline void expect_identical_outputs(const std::vector<std::vector<char>>& seams,
+                                     const std::vector<std::vector<Point_2>>& uvs)
+{
+  for(std::size_t i = 1; i < uvs.size(); ++i)
+  {
+    EXPECT_TRUE(seams[i] == seams[0]) << "run " << i;
+    ASSERT_EQ(uvs[i].size(), uvs[0].size()) << "run " << i;
+    std::size_t differ = 0;
+    for(std::size_t k = 0; k < uvs[0].size(); ++k)
+      if(std::memcmp(&uvs[i][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
+    EXPECT_EQ(differ, std::size_t(0)) << "run " << i;
+  }
+}
 
 /// Charts of the cut mesh, as computed by check_cut_result().
 template <typename Mesh>
