@@ -31,7 +31,9 @@ struct Cut_and_parameterize_progress
 /// Wall-clock time, in seconds (`std::chrono::steady_clock`), of the phases of
 /// one call to `cut_and_parameterize()`. The parts add up to at most `total`:
 /// the rest goes to argument checks, writing the outputs, the statistics of the
-/// result and the progress callback. Measuring changes nothing in the result.
+/// result and the progress callback. Under `distortion_bound`, each phase sums
+/// the seconds of all the runs of the search; two runs at a time at once, they
+/// can add up to more than `total`. Measuring changes nothing in the result.
 /// After an error, the phases not reached are 0.
 struct Cut_and_parameterize_timings
 {

@@ -241,10 +241,10 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     return OK;
   };
 
-  // The walk: the given λ and half of it first (a bound below the default
-  // mode's E_d is the common case), then down by two halvings per round
-  // while nothing passed, or up by two doublings per round from a passing
-  // λ while nothing above it failed, within the search's limits.
+  // The walk: the given λ and half of it first (a bound is most often asked
+  // for less distortion than the default gives), then down by two halvings
+  // per round while nothing passed, or up by two doublings per round from a
+  // passing λ while nothing above it failed, within the search's limits.
   const double lowest = settings.lambda * std::ldexp(1., -search.steps_down);
   const double highest = settings.lambda * std::ldexp(1., search.steps_up);
   auto failing_above = [&](double lambda) {
