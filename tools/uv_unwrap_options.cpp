@@ -175,9 +175,9 @@ bool parse_arguments(int argc, char** argv, Options& options)
     ->type_name("N")->transform(count())->group(method);
   app.add_option("--max-distortion", options.max_distortion,
                  "E_d at most B (>= 4), with seams as short as the search on\n"
-                 "the seam cost finds (at most 10 runs; distortion_bound); if no\n"
-                 "run reaches B, cuts are added one at a time where the map\n"
-                 "is most distorted (low-poly models)")
+                 "the seam cost finds (at most 11 runs, two at a time on two\n"
+                 "cores; distortion_bound); if no run reaches B, cuts are added\n"
+                 "one at a time where the map is most distorted (low-poly models)")
     ->type_name("B")->transform(number("a number >= 4", [](double x) { return x >= 4.; }))
     ->group(method);
 
