@@ -49,6 +49,13 @@ struct Joint_state
   Joint_timings timings;
 };
 
+/// Up to this many faces, the work that runs two trials at once, each on its
+/// own Joint_state (the λ search's runs, the zips of seam_merging.h), does
+/// so; above, one after the other, so that peak memory stays that of one
+/// state (bimba_i_f10000 refined to 640k faces: 2.6 GB for a run). Either
+/// way gives the same result.
+constexpr std::size_t two_states_at_once_max_faces = 250000;
+
 /// Cuts the edges of `paths`, then joins any closed slit (a path that does
 /// not reach the boundary) to the boundary by a short path, so every chart
 /// stays a topological disk (make_disks()). Rebuilds the chart mesh and

@@ -41,11 +41,6 @@ struct Bound_search_settings
                         // duck1 E_s 1.69 -> 1.34, planck1 2.50 -> 2.27, face_f10000 2.30 -> 2.35)
 };
 
-/// Up to this many faces, the trials of the search run two at a time at
-/// once; above, one after the other, so that peak memory stays that of one
-/// run (bimba_i_f10000 refined to 640k faces: 2.6 GB per run).
-constexpr std::size_t parallel_trials_max_faces = 250000;
-
 /// The final solve of `candidate` (from a Tutte map or from its own map),
 /// with the box only within `settings.distortion_bound`; `state` becomes the
 /// result if its E_d is within the bound (`kept`), else takes only its
@@ -171,8 +166,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   // shorter on hand1 (6.41 -> 5.91) and bunnyhead, longer on planck1
   // (2.273 -> 2.289) and armadillo_i_f10000 (2.609 -> 2.724).
   // Two runs at once hold two states: on meshes above
-  // parallel_trials_max_faces they go one after the other (the same result).
-  const bool at_once = surface.number_of_faces() <= parallel_trials_max_faces;
+  // two_states_at_once_max_faces they go one after the other (the same result).
+  const bool at_once = surface.number_of_faces() <= two_states_at_once_max_faces;
   std::mutex progress_mutex;
   Joint_settings trial_base = unboxed;
   if(settings.progress)

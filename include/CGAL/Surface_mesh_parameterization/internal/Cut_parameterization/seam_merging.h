@@ -144,6 +144,7 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
                           Solve solve, Accept accept, Joint_state& state, std::vector<Merge_step>& kept)
 {
   kept.clear();
+  const bool at_once = surface.number_of_faces() <= two_states_at_once_max_faces;
   std::set<int> done; // tips whose branch was tried to the end
   for(int trials = 0; trials < merge.max_trials;)
   {
@@ -188,10 +189,15 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     for(std::size_t i = 0; i < lengths.size() && trials < merge.max_trials && !zipped_some; i += 2)
     {
       std::array<Attempt, 2> pair;
-      if(i + 1 < lengths.size())
-        parallel_invoke([&] { attempt(lengths[i], pair[0]); }, [&] { attempt(lengths[i + 1], pair[1]); });
+      auto first = [&] { attempt(lengths[i], pair[0]); };
+      auto second = [&] { attempt(lengths[i + 1], pair[1]); };
+      if(i + 1 >= lengths.size()) first();
+      else if(at_once) parallel_invoke(first, second);
       else
-        attempt(lengths[i], pair[0]);
+      {
+        first();
+        second();
+      }
       for(std::size_t j = 0; j < 2 && i + j < lengths.size(); ++j)
       {
         Attempt& a = pair[j];
