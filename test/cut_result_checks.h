@@ -26,9 +26,13 @@
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include <boost/property_map/property_map.hpp>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -123,6 +127,31 @@ inline void expect_identical_outputs(const std::vector<std::vector<char>>& seams
     EXPECT_EQ(differ, std::size_t(0)) << "run " << i;
   }
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+/// Runs `run(Cut_run<Mesh>&)` (which calls Cut_run::run() with the options
+/// under test and returns its result) on `mesh` once per number of TBB
+/// threads in `threads`, and asserts that every run gave the first one's
+/// seams, UVs (bit for bit) and Newton iterations.
+template <typename Mesh, typename Run>
+void expect_same_result_for_thread_counts(const Mesh& mesh, std::initializer_list<int> threads, Run run)
+{
+  std::vector<std::vector<Point_2>> uvs;
+  std::vector<std::vector<char>> seams;
+  std::vector<std::size_t> newton;
+  for(int t : threads)
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
+    Cut_run<Mesh> r(mesh);
+    ASSERT_TRUE(run(r).ok()) << t << " threads";
+    uvs.push_back(r.uv_vector());
+    seams.push_back(r.seam_vector());
+    newton.push_back(r.result.newton_iterations);
+  }
+  expect_identical_outputs(seams, uvs);
+  for(std::size_t i = 1; i < newton.size(); ++i) EXPECT_EQ(newton[i], newton[0]) << "run " << i;
+}
+#endif
 
 /// Charts of the cut mesh, as computed by check_cut_result().
 template <typename Mesh>

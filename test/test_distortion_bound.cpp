@@ -15,9 +15,6 @@
 #include <chrono>
 #include <limits>
 #include <thread>
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using namespace cut_test;
@@ -97,23 +94,12 @@ TYPED_TEST(Distortion_bound, bounds_below_four_are_refused)
 // (one mesh type: the threads do not depend on it; 43 s under the sanitizers).
 TEST(Distortion_bound_threads, the_result_is_the_same_for_any_number_of_threads)
 {
-  using TypeParam = Surface_mesh;
-  const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
-  std::vector<std::vector<Point_2>> uvs;
-  std::vector<std::vector<char>> seams;
-  std::vector<std::size_t> newton;
-  for(int threads : {1, 2, 4})
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    Cut_run<TypeParam> run(mesh);
-    ASSERT_TRUE(run.run(SMP::parameters::distortion_bound(4.2)).ok());
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(wide_cap());
+  expect_same_result_for_thread_counts(mesh, {1, 2, 4}, [&](Cut_run<Surface_mesh>& run) {
+    const auto& result = run.run(SMP::parameters::distortion_bound(4.2));
     check_cut_result(mesh, run);
-    uvs.push_back(run.uv_vector());
-    seams.push_back(run.seam_vector());
-    newton.push_back(run.result.newton_iterations);
-  }
-  expect_identical_outputs(seams, uvs);
-  for(std::size_t i = 1; i < newton.size(); ++i) EXPECT_EQ(newton[i], newton[0]);
+    return result;
+  });
 }
 #endif
 

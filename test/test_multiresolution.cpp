@@ -6,11 +6,6 @@
 // user's seams, not depend on the thread count, and reject a negative size.
 #include "cut_result_checks.h"
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
-#include <cstring>
 #include <iomanip>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -127,24 +122,10 @@ TYPED_TEST(MultiresolutionTyped, user_seams_are_kept_through_the_copy)
 // seams and UVs for any number of threads.
 TEST(Multiresolution, coarse_copy_is_deterministic_across_thread_counts)
 {
-  using Mesh = Surface_mesh;
-  const Mesh mesh = make_mesh<Mesh>(test_torus());
-  std::vector<std::vector<Point_2>> uvs;
-  std::vector<std::vector<char>> seams;
-  for(int threads : {1, 2})
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    Cut_run<Mesh> run(mesh);
-    ASSERT_TRUE(run.run(SMP::parameters::multiresolution_faces(coarse_faces)).ok());
-    uvs.push_back(run.uv_vector());
-    seams.push_back(run.seam_vector());
-  }
-  EXPECT_TRUE(seams[1] == seams[0]);
-  ASSERT_EQ(uvs[1].size(), uvs[0].size());
-  std::size_t differ = 0;
-  for(std::size_t k = 0; k < uvs[0].size(); ++k)
-    if(std::memcmp(&uvs[1][k], &uvs[0][k], sizeof(Point_2)) != 0) ++differ;
-  EXPECT_EQ(differ, std::size_t(0));
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(test_torus());
+  expect_same_result_for_thread_counts(mesh, {1, 2}, [](Cut_run<Surface_mesh>& run) {
+    return run.run(SMP::parameters::multiresolution_faces(coarse_faces));
+  });
 }
 #endif
 
