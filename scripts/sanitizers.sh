@@ -40,7 +40,9 @@ bash scripts/install_dependencies.sh
 # with -g, 112 s with -g1; this whole script about 52 minutes before the two
 # (CI 67 minutes in all), 24.6 after (18 of them building). Then, on a clean
 # clone: 1403 s with the tools' tests, 995 s without (build 11 minutes,
-# 272 tests 323 s); scripts/test.sh 606 s.
+# 272 tests 323 s); scripts/test.sh 606 s. Later (276 tests, the bounded
+# runs' thread-count test among them, measured while other work ran):
+# 1139 s, tests 436 s; scripts/test.sh 641 s.
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
   -DCUT_PARAM_UNITY_TESTS=ON \

@@ -26,6 +26,20 @@ struct Joint_timings
   double cut_extraction = 0.; // extract_cut_paths() and apply_cuts()
   double final_solve = 0.;    // final_solve(), injective re-solve included
   double packing = 0.;
+
+  /// Adds the seconds of `other`.
+  void add(const Joint_timings& other) { add_since(other, Joint_timings()); }
+  /// Adds the seconds of `later` spent after `earlier` (the same run's
+  /// timings at an earlier point).
+  void add_since(const Joint_timings& later, const Joint_timings& earlier)
+  {
+    initialization += later.initialization - earlier.initialization;
+    u_steps += later.u_steps - earlier.u_steps;
+    v_steps += later.v_steps - earlier.v_steps;
+    cut_extraction += later.cut_extraction - earlier.cut_extraction;
+    final_solve += later.final_solve - earlier.final_solve;
+    packing += later.packing - earlier.packing;
+  }
 };
 
 /// The state of the cut mesh: which edges are cut, its chart mesh and UVs.

@@ -130,7 +130,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   double best_pass_length = 0.; // 3D length of the seams of best_pass
   double best_pass_lambda = 0.; // the largest λ that passed (the bisection's lower end)
   bool have_pass = false, have_any = false;
-  std::vector<double> tried, failed; // λ of the trials, and of those above the bound
+  std::vector<double> failed; // λ of the trials above the bound
+  double lowest_tried = std::numeric_limits<double>::infinity();
 
   double best_any_lambda = 0.;
   // The trials, the rerouting and the merges run without the bounding box:
@@ -189,14 +190,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   auto record = [&](double lambda, Joint_state& s) {
     newton += s.newton_iterations - start.newton_iterations;
     factorizations += s.factorizations - start.factorizations;
-    timings.initialization += s.timings.initialization - start.timings.initialization;
-    timings.u_steps += s.timings.u_steps - start.timings.u_steps;
-    timings.v_steps += s.timings.v_steps - start.timings.v_steps;
-    timings.cut_extraction += s.timings.cut_extraction - start.timings.cut_extraction;
-    timings.final_solve += s.timings.final_solve - start.timings.final_solve;
-    timings.packing += s.timings.packing - start.timings.packing;
+    timings.add_since(s.timings, start.timings);
     const bool passed = s.distortion <= bound;
-    tried.push_back(lambda);
+    lowest_tried = (std::min)(lowest_tried, lambda);
     if(!passed) failed.push_back(lambda);
     if(passed)
     {
@@ -221,14 +217,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     Joint_state first, second;
     Error_code first_status = OK, second_status = OK;
     auto run_first = [&] { first_status = run(lambdas[0], split_to_bound, first); };
-    auto run_second = [&] { second_status = run(lambdas[1], split_to_bound, second); };
     if(lambdas.size() == 1) run_first();
-    else if(at_once) parallel_invoke(run_first, run_second);
-    else
-    {
-      run_first();
-      run_second();
-    }
+    else parallel_invoke(run_first, [&] { second_status = run(lambdas[1], split_to_bound, second); }, at_once);
     if(first_status != OK) return first_status;
     if(second_status != OK) return second_status;
     record(lambdas[0], first);
@@ -253,7 +243,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   {
     if((status = run_round(lambdas, false)) != OK) return status;
     lambdas.clear();
-    const double from = have_pass ? best_pass_lambda : *std::min_element(tried.begin(), tried.end());
+    const double from = have_pass ? best_pass_lambda : lowest_tried;
     const double factor = have_pass ? 2. : 0.5;
     if(have_pass && failing_above(best_pass_lambda) > 0.) break;
     for(double next = from * factor; lambdas.size() < 2 && next >= lowest * 0.999 && next <= highest * 1.001;

@@ -452,10 +452,7 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   state.newton_iterations += coarse_state.newton_iterations;
   state.factorizations += coarse_state.factorizations;
   state.initial_distortion = coarse_state.initial_distortion;
-  state.timings.initialization += coarse_state.timings.initialization;
-  state.timings.u_steps += coarse_state.timings.u_steps;
-  state.timings.v_steps += coarse_state.timings.v_steps;
-  state.timings.cut_extraction += coarse_state.timings.cut_extraction;
+  state.timings.add(coarse_state.timings); // no final solve or packing on the copy
   if(status != OK) return true;
   Scoped_timer extraction(state.timings.cut_extraction);
   transfer_cuts(surface, coarse, coarse_state.is_cut, state.rules, state.is_cut);
@@ -464,6 +461,17 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   Scoped_timer full_resolution(state.timings.initialization);
   status = initial_map(surface, state);
   return true;
+}
+
+/// The per-face λ with the forbidden edges' faces made dear
+/// (lambda_with_forbidden_faces()); sets the cost of cutting each edge in
+/// `state.rules` from it.
+template <typename Surface>
+std::vector<double> cut_costs(const Surface& surface, const std::vector<double>& input_face_lambda, Joint_state& state)
+{
+  std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
+  state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
+  return face_lambda;
 }
 
 /// True if optimize_cut_mesh() decides the cuts on a simplified copy.
@@ -487,8 +495,7 @@ Error_code prepare_first_u_step(const Surface& surface, const std::vector<double
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
   if(settings.passes == 0 || cuts_on_coarse_copy(surface, settings)) return OK;
-  const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
-  state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
+  cut_costs(surface, input_face_lambda, state);
   const Error_code status = start_cut_mesh(surface, settings, state);
   if(status != OK) return status;
   state.v = Eigen::VectorXd::Ones(Eigen::Index(surface.number_of_faces()));
@@ -510,8 +517,7 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
                              const Joint_settings& settings, Joint_state& state)
 {
   if(!settings.valid()) return ERROR_WRONG_PARAMETER;
-  const std::vector<double> face_lambda = lambda_with_forbidden_faces(surface, input_face_lambda, state.rules.forbidden);
-  state.rules.edge_factor = edge_lambda_factors(surface, face_lambda);
+  const std::vector<double> face_lambda = cut_costs(surface, input_face_lambda, state);
   Error_code status = OK;
   const bool coarse = cuts_on_coarse_copy(surface, settings)
                       && decide_cuts_on_coarse_copy(surface, face_lambda, settings, state, status);

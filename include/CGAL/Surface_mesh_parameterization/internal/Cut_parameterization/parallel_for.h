@@ -30,17 +30,22 @@ void parallel_for(std::size_t n, const Function& function)
 #endif
 }
 
-/// Runs f() and g(), at once where TBB is linked, one after the other
-/// otherwise. They must not share what they write.
+/// Runs f() and g(), at once where TBB is linked and `at_once`, one after
+/// the other otherwise. They must not share what they write.
 template <typename F, typename G>
-void parallel_invoke(const F& f, const G& g)
+void parallel_invoke(const F& f, const G& g, bool at_once = true)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_invoke(f, g);
+  if(at_once)
+  {
+    tbb::parallel_invoke(f, g);
+    return;
+  }
 #else
+  (void)at_once;
+#endif
   f();
   g();
-#endif
 }
 
 } // namespace cut

@@ -189,15 +189,10 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     for(std::size_t i = 0; i < lengths.size() && trials < merge.max_trials && !zipped_some; i += 2)
     {
       std::array<Attempt, 2> pair;
-      auto first = [&] { attempt(lengths[i], pair[0]); };
-      auto second = [&] { attempt(lengths[i + 1], pair[1]); };
-      if(i + 1 >= lengths.size()) first();
-      else if(at_once) parallel_invoke(first, second);
+      if(i + 1 < lengths.size())
+        parallel_invoke([&] { attempt(lengths[i], pair[0]); }, [&] { attempt(lengths[i + 1], pair[1]); }, at_once);
       else
-      {
-        first();
-        second();
-      }
+        attempt(lengths[i], pair[0]);
       for(std::size_t j = 0; j < 2 && i + j < lengths.size(); ++j)
       {
         Attempt& a = pair[j];
