@@ -6,11 +6,17 @@
 // With CGAL's data set, the low-poly models of issue 12 reach E_d <= 4.5 by
 // default, and <= 4.2 under that bound with fewer charts than xatlas makes.
 // Every result is a valid atlas (check_cut_result(): no flip, no crossing
-// border, disks).
+// border, disks). The split step keeps the first candidate accepted, or
+// (best_candidate, the bound search's second split trial) the one that
+// lowers E_d the most per unit of seam length, and counts every
+// candidate's work either way.
 #include "cut_result_checks.h"
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -20,6 +26,7 @@
 #include <unordered_map>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace ic = SMP::internal::cut;
 using namespace cut_test;
 
 template <typename Mesh>
@@ -120,5 +127,52 @@ TYPED_TEST(Low_poly, cgal_low_poly_models)
     EXPECT_LE(bounded.result.distortion, 4.2);
     const auto xatlas = xatlas_charts.find(name);
     if(xatlas != xatlas_charts.end()) EXPECT_LT(charts.number_of_charts, xatlas->second);
+  }
+}
+
+// One split of a hemisphere's Tutte map among the three most distorted
+// vertices, judged by a stand-in solve that makes the second candidate
+// lower E_d 100 times more per unit of seam length than the others.
+TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
+{
+  Surface_mesh mesh;
+  build_mesh(hemisphere_soup(8, 24), mesh);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Joint_state start;
+  start.is_cut.assign(surface.edges.size(), 0);
+  ic::build_chart_mesh(surface, start.is_cut, start.chart, start.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(start.chart, start.x) == ic::Embedding_status::OK);
+  start.distortion = ic::mean_distortion(start.chart, start.x);
+
+  for(bool best : {false, true})
+  {
+    SCOPED_TRACE(best ? "best candidate" : "first accepted");
+    ic::Split_settings settings;
+    settings.max_splits = 1;
+    settings.candidates = 3;
+    settings.best_candidate = best;
+    std::vector<std::vector<char>> judged; // the cut of each candidate, in the order judged
+    auto solve = [&](ic::Joint_state& trial) {
+      const double added = ic::seam_length_3d(surface, trial.is_cut);
+      trial.distortion = start.distortion - (judged.size() == 1 ? 1. : 0.01) * added;
+      trial.newton_iterations += 10; // the work of a judgment
+      judged.push_back(trial.is_cut);
+      return SMP::OK;
+    };
+    auto accept = [](double before, double after, double) { return after < before; };
+    ic::Joint_state state = start;
+    int kept = 0;
+    ASSERT_EQ(ic::split_greedily(surface, settings, 0., solve, accept, state, kept), SMP::OK);
+    EXPECT_EQ(kept, 1);
+    ASSERT_EQ(judged.size(), best ? std::size_t(3) : std::size_t(1));
+    EXPECT_EQ(state.is_cut, judged[best ? 1 : 0]);
+    EXPECT_GT(ic::seam_length_3d(surface, state.is_cut), 0.);
+    EXPECT_EQ(state.newton_iterations, 10 * judged.size()); // every judgment counted
+    if(best)
+    {
+      EXPECT_NE(judged[0], judged[1]);
+      EXPECT_NE(judged[1], judged[2]);
+    }
   }
 }

@@ -11,7 +11,9 @@
 // edges; the map carried over the new cut is solved again (by the caller).
 // A split is kept if the rule of the caller accepts the distortion it
 // leaves for the seam length it adds; the first few most distorted vertices
-// are tried in turn, and the splits stop when none is accepted.
+// are tried in turn (the first accepted is kept), or all of them (the one
+// that lowers E_d the most per unit of seam length added is kept), and the
+// splits stop when none is accepted.
 #ifndef CGAL_SMP_CUT_INTERNAL_GREEDY_SPLITS_H
 #define CGAL_SMP_CUT_INTERNAL_GREEDY_SPLITS_H
 
@@ -36,6 +38,10 @@ struct Split_settings
   int max_splits = 64;     // splits kept at most
   int candidates = 3;      // most distorted vertices tried per split
   int newton_iterations = 30; // Newton iterations that judge a split
+  // false: the first accepted candidate is kept; true: every candidate is
+  // judged, and the one with the largest E_d decrease per unit of seam
+  // length added is kept
+  bool best_candidate = false;
 };
 
 /// Per surface vertex: Σ A_f (e_f − 4) / 3 over its faces, e_f the E_d
@@ -131,26 +137,36 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     std::partial_sort(order.begin(), order.begin() + tried, order.end(), [&](int a, int b) {
       return rank[a] > rank[b] || (rank[a] == rank[b] && a < b);
     });
-    bool split_kept = false;
-    for(std::size_t i = 0; i < tried && !split_kept; ++i)
+    Joint_state best;
+    double best_gain = -1.; // E_d decrease per unit of E_s added of `best`
+    for(std::size_t i = 0; i < tried && (split.best_candidate || best_gain < 0.); ++i)
     {
       Cut_path path{boundary.path_edges(order[i]), 0.};
       Joint_state trial = state;
       apply_cuts(surface, {path}, trial);
       const Error_code status = solve(trial);
       if(status != OK) return status;
+      // the work was done anyway: counted whatever is kept
+      state.newton_iterations = trial.newton_iterations;
+      state.factorizations = trial.factorizations;
       const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
       // (a path whose cut could not keep the charts disks is not cut: added 0)
       if(added > 0. && accept(state.distortion, trial.distortion, added))
       {
-        state = std::move(trial); // its counters include the work of this split
-        split_kept = true;
+        const double gain = (state.distortion - trial.distortion) / added;
+        if(gain > best_gain)
+        {
+          best_gain = gain;
+          best = std::move(trial);
+        }
       }
-      else
-      {
-        state.newton_iterations = trial.newton_iterations; // the work was done anyway
-        state.factorizations = trial.factorizations;
-      }
+    }
+    const bool split_kept = best_gain >= 0.;
+    if(split_kept)
+    {
+      best.newton_iterations = state.newton_iterations;
+      best.factorizations = state.factorizations;
+      state = std::move(best);
     }
     if(!split_kept) break;
   }
