@@ -228,10 +228,14 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     s = start;
     return optimize_cut_mesh(surface, face_lambda, trial_settings, s);
   };
-  auto record = [&](double lambda, Joint_state& s) {
+  // the work of a trial from `start`
+  auto add_work = [&](const Joint_state& s) {
     newton += s.newton_iterations - start.newton_iterations;
     factorizations += s.factorizations - start.factorizations;
     timings.add_since(s.timings, start.timings);
+  };
+  auto record = [&](double lambda, Joint_state& s) {
+    add_work(s);
     const bool passed = s.distortion <= bound;
     lowest_tried = (std::min)(lowest_tried, lambda);
     if(!passed) failed.push_back(lambda);
@@ -322,9 +326,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     if(second_status != OK) return second_status;
     for(Joint_state* s : {&first, &second})
     {
-      newton += s->newton_iterations - start.newton_iterations;
-      factorizations += s->factorizations - start.factorizations;
-      timings.add_since(s->timings, start.timings);
+      add_work(*s);
       if(s->distortion <= bound) candidates.push_back(std::move(*s));
     }
   }
@@ -359,16 +361,21 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   // first split accepted, 2.44 -> 1.74 for the best; planck1 3.14 -> 1.86 and 2.30 -> 2.19).
   {
     Scoped_timer merging(timings.final_solve);
-    std::vector<Error_code> statuses(candidates.size(), OK);
+    struct Shortening
+    {
+      Error_code status = OK;
+      std::size_t newton = 0, factorizations = 0; // its work
+    };
+    std::vector<Shortening> shortening(candidates.size());
     auto shorten = [&](std::size_t i) {
       Joint_state& c = candidates[i];
-      if((statuses[i] = straighten_under_bound(surface, unboxed, user_cut, c)) == OK)
-        statuses[i] = merge_under_bound(surface, unboxed, user_cut, c);
+      const std::size_t newton_before = c.newton_iterations, factorizations_before = c.factorizations;
+      Error_code& status = shortening[i].status;
+      if((status = straighten_under_bound(surface, unboxed, user_cut, c)) == OK)
+        status = merge_under_bound(surface, unboxed, user_cut, c);
+      shortening[i].newton = c.newton_iterations - newton_before;
+      shortening[i].factorizations = c.factorizations - factorizations_before;
     };
-    std::vector<std::size_t> before(candidates.size());
-    for(std::size_t i = 0; i < candidates.size(); ++i) before[i] = candidates[i].newton_iterations;
-    std::vector<std::size_t> before_factorizations(candidates.size());
-    for(std::size_t i = 0; i < candidates.size(); ++i) before_factorizations[i] = candidates[i].factorizations;
     for(std::size_t i = 0; i < candidates.size(); i += 2)
     {
       if(i + 1 < candidates.size()) parallel_invoke([&] { shorten(i); }, [&] { shorten(i + 1); }, at_once);
@@ -378,9 +385,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     double shortest = std::numeric_limits<double>::infinity();
     for(std::size_t i = 0; i < candidates.size(); ++i)
     {
-      if(statuses[i] != OK) return statuses[i];
-      newton += candidates[i].newton_iterations - before[i];
-      factorizations += candidates[i].factorizations - before_factorizations[i];
+      if(shortening[i].status != OK) return shortening[i].status;
+      newton += shortening[i].newton;
+      factorizations += shortening[i].factorizations;
       const double length = seam_length_3d(surface, candidates[i].is_cut);
       if(length < shortest)
       {
