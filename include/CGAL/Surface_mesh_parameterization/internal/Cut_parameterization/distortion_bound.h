@@ -129,19 +129,29 @@ Error_code straighten_under_bound(const Surface& surface, const Joint_settings& 
 /// splits (circular_box_o_f20000 of the OptCuts set: 21 s for the trial alone).
 constexpr std::size_t split_trial_max_faces = 25000;
 
+/// Most distorted vertices judged per split by the split trial that keeps
+/// the best of them (Split_settings::best_candidate). Under OptCuts' 11
+/// bounds, 3 -> 6: the seams at most OptCuts' on 6 meshes instead of 5
+/// (venus E_s 1.737 -> 1.659), geometric mean of E_s / OptCuts' 0.99 ->
+/// 0.96 (face_f10000 1.353 -> 1.228, armadillo_i_f10000 2.386 -> 2.161;
+/// circular_box_o_f20000 1.387 -> 1.423).
+constexpr int best_split_candidates = 6;
+
 /// A trial of the bound search without the alternation: from the initial
 /// cut and map of `state` (with its first u-step where the search prepared
 /// one), the final solve without box, then cuts added one at a time where
 /// the map is most distorted (greedy_splits.h) until E_d is within the
-/// bound; `best_candidate`: see Split_settings. Such seams grow from the
-/// most distorted places only, and are often shorter than those of the field
-/// v at the same E_d (OptCuts' 11 bounds, see bounded_joint_optimization()).
+/// bound; `best_candidate`: see Split_settings (with best_split_candidates
+/// vertices judged per split). Such seams grow from the most distorted
+/// places only, and are often shorter than those of the field v at the same
+/// E_d (OptCuts' 11 bounds, see bounded_joint_optimization()).
 template <typename Surface>
 Error_code split_from_start(const Surface& surface, const std::vector<double>& face_lambda,
                             const Joint_settings& settings, bool best_candidate, Joint_state& state)
 {
   Joint_settings split_settings = settings;
   split_settings.split.best_candidate = best_candidate;
+  if(best_candidate) split_settings.split.candidates = best_split_candidates;
   const bool from_tutte_map = !state.first_u_step_done;
   if(from_tutte_map)
   {
@@ -308,13 +318,14 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
 
   // The split trials (split_from_start()), two at once: keeping the first
   // split accepted among the three most distorted vertices, and keeping the
-  // best of the three. Those within the bound join the best λ trial as
-  // candidates. Under OptCuts' 11 bounds (2 cores) the seams kept came from
-  // the first kind on 4 meshes, from the second on 5, from a λ trial on 2
-  // (tooth, cat); E_s / OptCuts' E_s went from a geometric mean of 1.27 to
-  // 0.99 (bimba_i_f10000 2.37 -> 1.72, bunnyhead 3.87 -> 2.43, hand1 5.91 ->
-  // 3.88), at 1.5-4x the time (venus 0.61 -> 1.04 s, armadillo_i_f10000
-  // 23 -> 46 s, circular_box_o_f20000 11.6 -> 44.6 s).
+  // best of the six most distorted. Those within the bound join the best λ
+  // trial as candidates. Under OptCuts' 11 bounds (2 cores; both trials
+  // judging three vertices) the seams kept came from the first kind on 4
+  // meshes, from the second on 5, from a λ trial on 2 (tooth, cat); E_s /
+  // OptCuts' E_s went from a geometric mean of 1.27 to 0.99 (bimba_i_f10000
+  // 2.37 -> 1.72, bunnyhead 3.87 -> 2.43, hand1 5.91 -> 3.88), at 1.5-4x the
+  // time (venus 0.61 -> 1.04 s, armadillo_i_f10000 23 -> 46 s,
+  // circular_box_o_f20000 11.6 -> 44.6 s); best_split_candidates for six.
   std::vector<Joint_state> candidates;
   if(settings.greedy_splits && settings.passes > 0 && surface.number_of_faces() <= split_trial_max_faces)
   {
