@@ -4,12 +4,15 @@
 // after the greedy splits that follow the λ search) keeps the lowest E_d
 // found and says so, and bounds below 4 are refused. The search's trials
 // run two at a time: the result is the same for any number of threads, and
-// a progress callback sees one trial at a time and can cancel. Every
+// a progress callback sees one trial at a time and can cancel. The split
+// trials (internal split_from_start()), from the search's prepared start,
+// reach a reachable bound by cutting, whichever split they keep. Every
 // result is a valid atlas (check_cut_result()).
 #include "cut_result_checks.h"
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 
 #include <atomic>
 #include <chrono>
@@ -17,6 +20,7 @@
 #include <thread>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace ic = SMP::internal::cut;
 using namespace cut_test;
 
 template <typename Mesh>
@@ -125,4 +129,33 @@ TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_ca
   canceled.run(SMP::parameters::progress_callback(cancel, SMP::parameters::distortion_bound(4.2)));
   EXPECT_EQ(canceled.result.error, SMP::ERROR_CANCELED);
   EXPECT_EQ(canceled.number_of_seam_edges(), 0u); // outputs untouched
+}
+
+TEST(Distortion_bound_splits, split_trials_reach_a_reachable_bound_by_cutting)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(wide_cap());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Joint_settings settings;
+  settings.distortion_bound = 4.2;
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Joint_state start;
+  start.is_cut.assign(surface.edges.size(), 0);
+  ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, settings, start), SMP::OK);
+  ASSERT_TRUE(start.first_u_step_done);
+  ASSERT_GT(ic::mean_distortion(start.chart, start.x), 4.2); // the start's map is above the bound
+  for(bool best : {false, true})
+  {
+    SCOPED_TRACE(best ? "best of the candidates" : "first accepted");
+    ic::Joint_state trial = start;
+    ASSERT_EQ(ic::split_from_start(surface, face_lambda, settings, best, trial), SMP::OK);
+    EXPECT_LE(trial.distortion, 4.2);
+    EXPECT_NEAR(trial.distortion, ic::mean_distortion(trial.chart, trial.x), 1e-12);
+    EXPECT_GT(ic::seam_length_3d(surface, trial.is_cut), ic::seam_length_3d(surface, start.is_cut));
+    EXPECT_GT(trial.newton_iterations, start.newton_iterations);
+    EXPECT_TRUE(trial.x.allFinite());
+    EXPECT_EQ(ic::number_of_flipped_faces(trial.chart, trial.x), 0);
+    const ic::Chart_topology topology = ic::chart_topology(trial.chart);
+    for(int c = 0; c < topology.number_of_charts; ++c) EXPECT_TRUE(topology.is_disk(c));
+  }
 }
