@@ -267,17 +267,24 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
       have_any = true;
     }
   };
-  // one or two trials at once, recorded in the order given
+  // n trials, `trial(i, s)` filling trials[i], two at once (in_pairs());
+  // the first error in their order
+  std::vector<Joint_state> trials;
+  auto run_trials = [&](std::size_t n, const auto& trial) {
+    trials.assign(n, Joint_state());
+    std::vector<Error_code> statuses(n, OK);
+    in_pairs(n, [&](std::size_t i) { statuses[i] = trial(i, trials[i]); }, at_once);
+    for(Error_code s : statuses)
+      if(s != OK) return s;
+    return OK;
+  };
+  // one or two λ trials, recorded in the order given
   auto run_round = [&](const std::vector<double>& lambdas, bool split_to_bound) {
-    Joint_state first, second;
-    Error_code first_status = OK, second_status = OK;
-    auto run_first = [&] { first_status = run(lambdas[0], split_to_bound, first); };
-    if(lambdas.size() == 1) run_first();
-    else parallel_invoke(run_first, [&] { second_status = run(lambdas[1], split_to_bound, second); }, at_once);
-    if(first_status != OK) return first_status;
-    if(second_status != OK) return second_status;
-    record(lambdas[0], first);
-    if(lambdas.size() > 1) record(lambdas[1], second);
+    const Error_code round_status = run_trials(lambdas.size(), [&](std::size_t i, Joint_state& s) {
+      return run(lambdas[i], split_to_bound, s);
+    });
+    if(round_status != OK) return round_status;
+    for(std::size_t i = 0; i < lambdas.size(); ++i) record(lambdas[i], trials[i]);
     return OK;
   };
 
@@ -329,16 +336,15 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   std::vector<Joint_state> candidates;
   if(settings.greedy_splits && settings.passes > 0 && surface.number_of_faces() <= split_trial_max_faces)
   {
-    Joint_state first = start, second = start;
-    Error_code first_status = OK, second_status = OK;
-    parallel_invoke([&] { first_status = split_from_start(surface, face_lambda, trial_base, false, first); },
-                    [&] { second_status = split_from_start(surface, face_lambda, trial_base, true, second); }, at_once);
-    if(first_status != OK) return first_status;
-    if(second_status != OK) return second_status;
-    for(Joint_state* s : {&first, &second})
+    if((status = run_trials(2, [&](std::size_t i, Joint_state& s) {
+          s = start;
+          return split_from_start(surface, face_lambda, trial_base, i == 1, s);
+        })) != OK)
+      return status;
+    for(Joint_state& s : trials)
     {
-      add_work(*s);
-      if(s->distortion <= bound) candidates.push_back(std::move(*s));
+      add_work(s);
+      if(s.distortion <= bound) candidates.push_back(std::move(s));
     }
   }
 
@@ -372,33 +378,24 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   // first split accepted, 2.44 -> 1.74 for the best; planck1 3.14 -> 1.86 and 2.30 -> 2.19).
   {
     Scoped_timer merging(timings.final_solve);
-    struct Shortening
-    {
-      Error_code status = OK;
-      std::size_t newton = 0, factorizations = 0; // its work
+    // the trials' work is counted already: from here each state counts its own
+    auto collect_work = [&](Joint_state& s) {
+      newton += s.newton_iterations;
+      factorizations += s.factorizations;
+      s.newton_iterations = s.factorizations = 0;
     };
-    std::vector<Shortening> shortening(candidates.size());
-    auto shorten = [&](std::size_t i) {
-      Joint_state& c = candidates[i];
-      const std::size_t newton_before = c.newton_iterations, factorizations_before = c.factorizations;
-      Error_code& status = shortening[i].status;
-      if((status = straighten_under_bound(surface, unboxed, user_cut, c)) == OK)
-        status = merge_under_bound(surface, unboxed, user_cut, c);
-      shortening[i].newton = c.newton_iterations - newton_before;
-      shortening[i].factorizations = c.factorizations - factorizations_before;
-    };
-    for(std::size_t i = 0; i < candidates.size(); i += 2)
-    {
-      if(i + 1 < candidates.size()) parallel_invoke([&] { shorten(i); }, [&] { shorten(i + 1); }, at_once);
-      else shorten(i);
-    }
+    for(Joint_state& c : candidates) c.newton_iterations = c.factorizations = 0;
+    std::vector<Error_code> statuses(candidates.size(), OK);
+    in_pairs(candidates.size(), [&](std::size_t i) {
+      if((statuses[i] = straighten_under_bound(surface, unboxed, user_cut, candidates[i])) == OK)
+        statuses[i] = merge_under_bound(surface, unboxed, user_cut, candidates[i]);
+    }, at_once);
     std::size_t chosen = 0;
     double shortest = std::numeric_limits<double>::infinity();
     for(std::size_t i = 0; i < candidates.size(); ++i)
     {
-      if(shortening[i].status != OK) return shortening[i].status;
-      newton += shortening[i].newton;
-      factorizations += shortening[i].factorizations;
+      if(statuses[i] != OK) return statuses[i];
+      collect_work(candidates[i]);
       const double length = seam_length_3d(surface, candidates[i].is_cut);
       if(length < shortest)
       {
@@ -409,11 +406,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     state = std::move(candidates[chosen]);
     if(settings.bounding_box_stiffness > 0.)
     {
-      const std::size_t box_newton = state.newton_iterations, box_factorizations = state.factorizations;
       bool kept = false;
       if((status = solve_within_bound(settings, false, state, state, kept)) != OK) return status;
-      newton += state.newton_iterations - box_newton;
-      factorizations += state.factorizations - box_factorizations;
+      collect_work(state);
     }
   }
   state.newton_iterations = newton;

@@ -48,6 +48,19 @@ void parallel_invoke(const F& f, const G& g, bool at_once = true)
   g();
 }
 
+/// Calls f(i) for every i < n, two at a time (parallel_invoke(), with
+/// `at_once`), the pairs one after the other; f(i) must write only what
+/// belongs to i.
+template <typename F>
+void in_pairs(std::size_t n, const F& f, bool at_once = true)
+{
+  for(std::size_t i = 0; i < n; i += 2)
+  {
+    if(i + 1 < n) parallel_invoke([&] { f(i); }, [&] { f(i + 1); }, at_once);
+    else f(i);
+  }
+}
+
 } // namespace cut
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -169,7 +169,7 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     for(std::size_t k = branch.edges.size(); lengths.size() < 5 && k >= 1; k = k == 1 ? 0 : (k + 1) / 2)
       lengths.push_back(k);
     // Each length is zipped and solved from the same state: two at a time, at
-    // once (parallel_invoke()), read in order; the first one accepted is
+    // once (in_pairs()), read in order; the first one accepted is
     // kept, as if they had been tried one after the other. The second of a
     // pair is solved even when the first is kept (its Newton work counts),
     // so the counts do not depend on the number of threads either.
@@ -189,10 +189,8 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     for(std::size_t i = 0; i < lengths.size() && trials < merge.max_trials && !zipped_some; i += 2)
     {
       std::array<Attempt, 2> pair;
-      if(i + 1 < lengths.size())
-        parallel_invoke([&] { attempt(lengths[i], pair[0]); }, [&] { attempt(lengths[i + 1], pair[1]); }, at_once);
-      else
-        attempt(lengths[i], pair[0]);
+      in_pairs((std::min)(std::size_t(2), lengths.size() - i), [&](std::size_t j) { attempt(lengths[i + j], pair[j]); },
+               at_once);
       for(std::size_t j = 0; j < 2 && i + j < lengths.size(); ++j)
       {
         Attempt& a = pair[j];
