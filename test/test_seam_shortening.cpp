@@ -1,7 +1,8 @@
 // Seam shortening under a distortion bound (internal seam_straightening.h
 // and seam_merging.h): a zigzag seam on a flat grid is rerouted along the
 // straight row beside it (shorter, same ends, every chart still a disk),
-// around forbidden edges, never moving the user's seams; a slit opened by a
+// around forbidden edges, never moving the user's seams; a seam from the
+// border may end at the border vertex nearest its tip; a slit opened by a
 // Tutte map is pulled shut and zipped without flipping a face; and a bounded
 // run never ends above its bound.
 #include "cut_result_checks.h"
@@ -134,6 +135,50 @@ TEST(Seam_shortening, forbidden_edges_and_given_seams_are_respected)
   std::vector<char> kept = given;
   EXPECT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), given, 2, kept), 0);
   EXPECT_EQ(kept, given);
+}
+
+TEST(Seam_shortening, a_seam_from_the_border_may_end_elsewhere_on_it)
+{
+  const Grid g;
+  ASSERT_TRUE(g.index_ok);
+  // from the left border at (0, 9) down to the tip (2, 6); the border point
+  // nearest the tip is (0, 6), two edges away
+  const std::vector<std::array<int, 2>> hook = {{0, 9}, {1, 9}, {1, 8}, {1, 7}, {2, 7}, {2, 6}};
+  std::vector<char> fixed_ends = g.path(hook), sliding = g.path(hook);
+  ASSERT_EQ(std::count(sliding.begin(), sliding.end(), 1), 5);
+  ASSERT_TRUE(g.charts_are_one_disk(sliding));
+
+  // its ends fixed, the path stays between (0, 9) and (2, 6)
+  ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 3, fixed_ends);
+  EXPECT_GE(seam_degree(g, fixed_ends, g.vertex(0, 9)), 1);
+  EXPECT_GT(g.length(fixed_ends), 2.5 / N);
+
+  EXPECT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 3, sliding, true), 1);
+  EXPECT_NEAR(g.length(sliding), 2. / N, 1e-12); // (2, 6) -> (1, 6) -> (0, 6)
+  EXPECT_TRUE(sliding[g.edge({0, 6}, {1, 6})]);
+  EXPECT_EQ(seam_degree(g, sliding, g.vertex(0, 9)), 0);
+  EXPECT_EQ(seam_degree(g, sliding, g.vertex(2, 6)), 1); // the tip stays where it was
+  EXPECT_TRUE(g.charts_are_one_disk(sliding));
+  EXPECT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 3, sliding, true), 0);
+
+  // never onto another seam: with a seam given from (0, 6) to (1, 8), a path
+  // from (0, 2) up to the tip (2, 6) ends at (0, 5) through (1, 5), not at
+  // (0, 6) (two edges away), and the given seam stays
+  const std::vector<std::array<int, 2>> up = {{0, 2}, {1, 2}, {1, 3}, {2, 3}, {2, 4}, {2, 5}, {2, 6}};
+  const std::vector<char> given = g.path({{0, 6}, {1, 7}, {1, 8}});
+  ASSERT_EQ(std::count(given.begin(), given.end(), 1), 2);
+  std::vector<char> both = g.path(up);
+  for(std::size_t e = 0; e < both.size(); ++e) both[e] = both[e] || given[e];
+  ASSERT_TRUE(g.charts_are_one_disk(both));
+  EXPECT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), given, 3, both, true), 1);
+  for(std::size_t e = 0; e < both.size(); ++e)
+    if(given[e]) EXPECT_TRUE(both[e]);
+  EXPECT_NEAR(g.length(both) - g.length(given), (1. + std::sqrt(2.)) / N, 1e-12);
+  EXPECT_TRUE(both[g.edge({2, 6}, {1, 5})]);
+  EXPECT_EQ(seam_degree(g, both, g.vertex(0, 6)), 1); // the given seam's alone
+  EXPECT_EQ(seam_degree(g, both, g.vertex(0, 5)), 1);
+  EXPECT_EQ(seam_degree(g, both, g.vertex(2, 6)), 1);
+  EXPECT_TRUE(g.charts_are_one_disk(both));
 }
 
 TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)

@@ -115,12 +115,17 @@ Error_code straighten_under_bound(const Surface& surface, const Joint_settings& 
   const double bound = settings.distortion_bound;
   const int rings = settings.seam_straightening_rings;
   if(rings <= 0 || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
-  Joint_state candidate = state;
-  if(straighten_seams(surface, candidate.rules, keep, rings, candidate.is_cut) == 0) return OK;
-  build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
-  if(disk_charts_embedding(candidate.chart, candidate.x) != Embedding_status::OK) return OK;
-  bool kept = false;
-  return solve_within_bound(settings, true, std::move(candidate), state, kept);
+  for(bool slide : {false, true})
+  {
+    Joint_state candidate = state;
+    if(straighten_seams(surface, candidate.rules, keep, rings, candidate.is_cut, slide) == 0) continue;
+    build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
+    if(disk_charts_embedding(candidate.chart, candidate.x) != Embedding_status::OK) continue;
+    bool kept = false;
+    const Error_code status = solve_within_bound(settings, true, std::move(candidate), state, kept);
+    if(status != OK) return status;
+  }
+  return OK;
 }
 
 /// Meshes up to this many faces get the split trials of the bound search

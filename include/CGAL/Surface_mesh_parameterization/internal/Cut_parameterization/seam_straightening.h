@@ -34,9 +34,12 @@ namespace cut {
 /// rerouted.
 template <typename Surface>
 int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::vector<char>& keep, int rings,
-                     std::vector<char>& is_cut)
+                     std::vector<char>& is_cut, bool slide_border_ends = false)
 {
   const int nv = int(surface.number_of_vertices());
+  std::vector<char> on_border(nv, 0);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(surface.twin[fe] < 0) on_border[surface.edge_source(fe)] = on_border[surface.edge_target(fe)] = 1;
   std::vector<std::vector<int>> neighbors(nv);
   std::vector<char> on_old(surface.edges.size(), 0);
   std::vector<std::vector<int>> edges_around(nv); // face-edges leaving each vertex
@@ -92,7 +95,13 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
     for(int v : old_path.vertices) on_this_path[v] = 1;
     for(int e : old_path.edges) on_old[e] = 1;
     const Seam_graph g = seam_graph(surface, is_cut, keep);
+    // with `slide_border_ends`, a path from the mesh border to a vertex off it
+    // may end at any border vertex of its corridor on no other seam: it runs
+    // from its inner end to a sink joined to those vertices' interior edges
+    const bool slide = slide_border_ends && on_border[s] != on_border[t];
+    const int border_end = on_border[s] ? s : t, inner_end = on_border[s] ? t : s;
     auto usable = [&](int v) {
+      if(slide && v == border_end) return false;
       if(v == s || v == t) return true;
       if(ring_of[v] < 0 || g.node[v]) return false;
       return g.arcs[v].empty() || on_this_path[v];
@@ -106,8 +115,33 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
         if(is_cut[e] && !on_old[e]) continue;
         if(v < w) graph.add_edge(v, w, e, rules.cost(surface, fe));
       }
+    int sink = -1;
+    if(slide)
+    {
+      auto on_a_seam = [&](int v) { // the user's seams included
+        for(int fe : edges_around[v])
+          if(is_cut[surface.edge_of[fe]]) return true;
+        return false;
+      };
+      sink = graph.add_vertex();
+      for(int v : corridor)
+        for(int fe : edges_around[v])
+        {
+          const int e = surface.edge_of[fe], b = surface.edge_target(fe);
+          if(!on_border[b] || ring_of[b] < 0 || (b != border_end && on_a_seam(b))) continue;
+          if(on_border[v] || surface.twin[fe] < 0 || rules.is_forbidden(e) || !usable(v)) continue;
+          if(is_cut[e] && !on_old[e]) continue;
+          graph.add_edge(v, sink, e, rules.cost(surface, fe));
+        }
+    }
     for(int v : corridor) ring_of[v] = -1;
-    const std::vector<int> new_edges = graph.shortest_path(s, t, scratch);
+    std::vector<int> new_edges;
+    if(slide)
+    {
+      Shortest_paths paths; // sized for this graph, with its sink
+      new_edges = graph.shortest_path(inner_end, sink, paths);
+    }
+    else new_edges = graph.shortest_path(s, t, scratch);
     for(int e : old_path.edges) on_old[e] = 0;
     if(new_edges.empty()) continue;
     double old_cost = 0., new_cost = 0.;
