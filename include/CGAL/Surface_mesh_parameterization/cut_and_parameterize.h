@@ -313,8 +313,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     greedily (see below) from the initial cut until E_d is within the
 ///     bound. The candidates are the passing λ run with the shortest seams
 ///     and the passing split trials; the seams of each are rerouted along
-///     shorter paths and zipped back from their tips where the bound allows,
-///     and the shortest win; the bounding box comes last, within what the
+///     shorter paths (the ends of seams from the mesh border may slide along
+///     it), zipped back from their tips and rerouted again where the bound
+///     allows, and the shortest win; the bounding box comes last, within what the
 ///     bound leaves. If no trial reaches the bound, cuts are added greedily
 ///     to the least distorted run and to the run at the given λ; if neither
 ///     reaches it, the result with the lowest E_d is returned and
