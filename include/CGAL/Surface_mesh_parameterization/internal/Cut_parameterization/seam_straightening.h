@@ -11,7 +11,10 @@
 // path (Cut_rules: the λ map, forbidden edges) between its two end nodes
 // through the vertices within `rings` rings of it that touch no other seam
 // and no border; the replacement is kept if it is cheaper and every chart
-// is still a disk, with the same number of charts.
+// is still a disk, with the same number of charts. Optionally, a path from
+// the mesh border to a node off it may also end elsewhere on the border:
+// at the border vertex of its corridor, on no other seam, that its inner
+// end reaches most cheaply.
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 #define CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 
@@ -30,8 +33,9 @@ namespace internal {
 namespace cut {
 
 /// Reroutes the seams of `is_cut` (see the file's comment); the edges
-/// flagged in `keep` stay as they are. Returns the number of paths
-/// rerouted.
+/// flagged in `keep` stay as they are; with `slide_border_ends`, the ends
+/// of paths from the mesh border may move along it. Returns the number of
+/// paths rerouted.
 template <typename Surface>
 int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::vector<char>& keep, int rings,
                      std::vector<char>& is_cut, bool slide_border_ends = false)
