@@ -278,6 +278,16 @@ public:
   /// vs 19 ms, 40k 166 vs 58 ms (METIS-ordered simplicial LLT: 93 ms); at
   /// 160k 1.3 s (METIS) vs 0.88 s, at 640k 11.1 vs 3.7 s. The 15 benchmark
   /// meshes: same E_d and E_s, geometric-mean speedup 2.20x -> 2.57x.
+  ///
+  /// Measured and left out: one level of nested dissection on two cores
+  /// (METIS vertex separator; each half its own CHOLMOD factor with the
+  /// separator last, c I in its block; the separator's Schur complement
+  /// from the halves' last blocks, dense). bimba_i_f10000, 10k unknowns, 118
+  /// in the separator: 4.7 ms per factorization against 5.6 ms (the halves
+  /// 3.3 and 3.1 ms one after the other, 3.9 and 3.7 ms at once; their work
+  /// 24 and 10 MFlop until the separator was moved by weights), but the
+  /// analyses (separator, two orderings) at every new pattern ate the gain:
+  /// on the 8 benchmark meshes of 8k-20k faces, end to end -5% to +8%.
   static constexpr Eigen::Index cholmod_threshold = 8000;
 
   /// Symbolic analysis; call again only when the pattern changes.
