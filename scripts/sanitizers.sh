@@ -45,6 +45,8 @@ bash scripts/install_dependencies.sh
 # 1139 s, tests 436 s; scripts/test.sh 641 s. With the bound's split trials
 # (277 tests; uv_unwrap_max_distortion 140 s, the longest): both scripts
 # 1686 s on a clean clone, tests 503 s here and 199 s in scripts/test.sh.
+# With the border slides and the second rerouting (278 tests;
+# uv_unwrap_max_distortion 167 s): 1951 s, tests 560 s here, 223 s there.
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
   -DCUT_PARAM_UNITY_TESTS=ON \
