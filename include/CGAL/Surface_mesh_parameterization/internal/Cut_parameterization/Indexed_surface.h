@@ -50,6 +50,14 @@ struct Indexed_surface
   {
     return (points[edge_target(face_edge)] - points[edge_source(face_edge)]).norm();
   }
+  /// 1 for each vertex on the mesh's border (an end of a face-edge without twin).
+  std::vector<char> border_vertices() const
+  {
+    std::vector<char> on_border(number_of_vertices(), 0);
+    for(int fe = 0; fe < int(twin.size()); ++fe)
+      if(twin[fe] < 0) on_border[edge_source(fe)] = on_border[edge_target(fe)] = 1;
+    return on_border;
+  }
   /// Halfedge of the input mesh that face-edge 3f+k stands for.
   halfedge_descriptor face_edge_halfedge(int face_edge) const
   {

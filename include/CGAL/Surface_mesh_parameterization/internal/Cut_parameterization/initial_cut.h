@@ -201,11 +201,10 @@ bool join_lone_cut_edges(const Surface& surface, std::vector<char>& is_cut, cons
 {
   const int nv = int(surface.number_of_vertices());
   std::vector<int> cut_degree(nv, 0);
-  std::vector<char> on_border(nv, 0);
+  const std::vector<char> on_border = surface.border_vertices();
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)
   {
     const int a = surface.edge_source(fe), b = surface.edge_target(fe);
-    if(surface.twin[fe] < 0) on_border[a] = on_border[b] = 1;
     if(is_cut[surface.edge_of[fe]] && (surface.twin[fe] < 0 || fe < surface.twin[fe])) { ++cut_degree[a]; ++cut_degree[b]; }
   }
   auto lone_end = [&](int v) { return cut_degree[v] == 1 && !on_border[v]; };

@@ -41,9 +41,7 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
                      std::vector<char>& is_cut, bool slide_border_ends = false)
 {
   const int nv = int(surface.number_of_vertices());
-  std::vector<char> on_border(nv, 0);
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-    if(surface.twin[fe] < 0) on_border[surface.edge_source(fe)] = on_border[surface.edge_target(fe)] = 1;
+  const std::vector<char> on_border = surface.border_vertices();
   std::vector<std::vector<int>> neighbors(nv);
   std::vector<char> on_old(surface.edges.size(), 0);
   std::vector<std::vector<int>> edges_around(nv); // face-edges leaving each vertex
@@ -110,14 +108,18 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
       if(ring_of[v] < 0 || g.node[v]) return false;
       return g.arcs[v].empty() || on_this_path[v];
     };
+    // an interior edge that may be cut: not forbidden, not on another seam
+    auto open = [&](int fe) {
+      const int e = surface.edge_of[fe];
+      return surface.twin[fe] >= 0 && !rules.is_forbidden(e) && (!is_cut[e] || on_old[e]);
+    };
     Edge_graph graph(nv);
     for(int v : corridor)
       for(int fe : edges_around[v])
       {
-        const int e = surface.edge_of[fe], w = surface.edge_target(fe);
-        if(ring_of[w] < 0 || surface.twin[fe] < 0 || rules.is_forbidden(e) || !usable(v) || !usable(w)) continue;
-        if(is_cut[e] && !on_old[e]) continue;
-        if(v < w) graph.add_edge(v, w, e, rules.cost(surface, fe));
+        const int w = surface.edge_target(fe);
+        if(v < w && ring_of[w] >= 0 && open(fe) && usable(v) && usable(w))
+          graph.add_edge(v, w, surface.edge_of[fe], rules.cost(surface, fe));
       }
     int sink = -1;
     if(slide)
@@ -131,21 +133,15 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
       for(int v : corridor)
         for(int fe : edges_around[v])
         {
-          const int e = surface.edge_of[fe], b = surface.edge_target(fe);
-          if(!on_border[b] || ring_of[b] < 0 || (b != border_end && on_a_seam(b))) continue;
-          if(on_border[v] || surface.twin[fe] < 0 || rules.is_forbidden(e) || !usable(v)) continue;
-          if(is_cut[e] && !on_old[e]) continue;
-          graph.add_edge(v, sink, e, rules.cost(surface, fe));
+          const int b = surface.edge_target(fe);
+          if(on_border[b] && ring_of[b] >= 0 && (b == border_end || !on_a_seam(b)) && !on_border[v] && open(fe)
+             && usable(v))
+            graph.add_edge(v, sink, surface.edge_of[fe], rules.cost(surface, fe));
         }
     }
     for(int v : corridor) ring_of[v] = -1;
-    std::vector<int> new_edges;
-    if(slide)
-    {
-      Shortest_paths paths; // sized for this graph, with its sink
-      new_edges = graph.shortest_path(inner_end, sink, paths);
-    }
-    else new_edges = graph.shortest_path(s, t, scratch);
+    // (scratch is resized where the graph has a sink)
+    const std::vector<int> new_edges = slide ? graph.shortest_path(inner_end, sink, scratch) : graph.shortest_path(s, t, scratch);
     for(int e : old_path.edges) on_old[e] = 0;
     if(new_edges.empty()) continue;
     double old_cost = 0., new_cost = 0.;
