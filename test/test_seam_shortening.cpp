@@ -3,13 +3,15 @@
 // straight row beside it (shorter, same ends, every chart still a disk),
 // around forbidden edges, never moving the user's seams; a seam from the
 // border may end at the border vertex nearest its tip; a slit opened by a
-// Tutte map is pulled shut and zipped without flipping a face; and a bounded
-// run never ends above its bound.
+// Tutte map is pulled shut and zipped without flipping a face; a bounded
+// run never ends above its bound; and without a bound, the final solve keeps
+// rerouted seams only where E_d stays within the allowance.
 #include "cut_result_checks.h"
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
@@ -34,9 +36,14 @@ struct Grid
   Surface_mesh mesh;
   ic::Indexed_surface<Surface_mesh> surface;
 
-  Grid()
+  /// `bump`: height of a Gaussian bump centred at (0.3, 0.65), just above
+  /// the row y = 7/N (0: flat), so that moving a seam changes the distortion
+  explicit Grid(double bump = 0.)
   {
-    build_mesh(grid_soup(N, N), mesh);
+    Soup soup = grid_soup(N, N);
+    for(Soup::Point& p : soup.points)
+      p[2] = bump * std::exp(-((p[0] - 0.3) * (p[0] - 0.3) + (p[1] - 0.65) * (p[1] - 0.65)) / 0.01);
+    build_mesh(soup, mesh);
     index_ok = ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK;
   }
   bool index_ok = false;
@@ -179,6 +186,59 @@ TEST(Seam_shortening, a_seam_from_the_border_may_end_elsewhere_on_it)
   EXPECT_EQ(seam_degree(g, both, g.vertex(0, 5)), 1);
   EXPECT_EQ(seam_degree(g, both, g.vertex(2, 6)), 1);
   EXPECT_TRUE(g.charts_are_one_disk(both));
+}
+
+TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
+{
+  const Grid g(0.15); // a bump: a seam moved off it costs distortion
+  ASSERT_TRUE(g.index_ok);
+  ic::Joint_state start;
+  start.is_cut = g.path(wave);
+  ic::build_chart_mesh(g.surface, start.is_cut, start.chart, start.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(start.chart, start.x) == ic::Embedding_status::OK);
+  ic::Joint_settings settings;
+  ASSERT_EQ(settings.rerouting_rings, 1);
+
+  // the wave's own final solve, and its straight row's (rerouted within a ring)
+  ic::Joint_state wave_solved = start;
+  ASSERT_EQ(ic::final_solve(settings, true, wave_solved), SMP::OK);
+  const double wave_distortion = ic::mean_distortion(wave_solved.chart, wave_solved.x);
+  ic::Joint_state row_solved = start;
+  ASSERT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 1, row_solved.is_cut), 1);
+  ic::build_chart_mesh(g.surface, row_solved.is_cut, row_solved.chart, row_solved.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(row_solved.chart, row_solved.x) == ic::Embedding_status::OK);
+  ASSERT_EQ(ic::final_solve(settings, true, row_solved), SMP::OK);
+  const double row_distortion = ic::mean_distortion(row_solved.chart, row_solved.x);
+  ASSERT_LT(g.length(row_solved.is_cut), g.length(start.is_cut));
+  // away from the bump the straight row costs distortion (what makes the next checks tell)
+  ASSERT_GT(row_distortion, wave_distortion);
+
+  // an allowance above that cost: the straight row, solved, without flips
+  settings.rerouting_allowance = 2. * (row_distortion - wave_distortion);
+  ic::Joint_state generous = start;
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, generous), SMP::OK);
+  EXPECT_EQ(generous.is_cut, row_solved.is_cut);
+  EXPECT_NEAR(ic::mean_distortion(generous.chart, generous.x), row_distortion, 1e-12);
+  EXPECT_EQ(ic::number_of_flipped_faces(generous.chart, generous.x), 0);
+  // both solves counted
+  EXPECT_EQ(generous.newton_iterations, wave_solved.newton_iterations + row_solved.newton_iterations);
+
+  // an allowance below it: the wave and its own map
+  settings.rerouting_allowance = 0.5 * (row_distortion - wave_distortion);
+  ic::Joint_state strict = start;
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, strict), SMP::OK);
+  EXPECT_EQ(strict.is_cut, start.is_cut);
+  EXPECT_NEAR(ic::mean_distortion(strict.chart, strict.x), wave_distortion, 1e-12);
+
+  // the user's seams (`keep`) are never rerouted; no rings, no rerouting
+  settings.rerouting_allowance = 1.;
+  ic::Joint_state given = start;
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, start.is_cut, true, given), SMP::OK);
+  EXPECT_EQ(given.is_cut, start.is_cut);
+  settings.rerouting_rings = 0;
+  ic::Joint_state off = start;
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, off), SMP::OK);
+  EXPECT_EQ(off.is_cut, start.is_cut);
 }
 
 TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)
