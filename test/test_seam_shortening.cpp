@@ -199,9 +199,10 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
   ic::Joint_settings settings;
   ASSERT_EQ(settings.rerouting_rings, 1);
 
-  // the wave's own final solve, and its straight row's (rerouted within a ring)
+  // the wave's own final solve (from its map, as after the alternation), and
+  // its straight row's (rerouted within a ring, from a Tutte map)
   ic::Joint_state wave_solved = start;
-  ASSERT_EQ(ic::final_solve(settings, true, wave_solved), SMP::OK);
+  ASSERT_EQ(ic::final_solve(settings, false, wave_solved), SMP::OK);
   const double wave_distortion = ic::mean_distortion(wave_solved.chart, wave_solved.x);
   ic::Joint_state row_solved = start;
   ASSERT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 1, row_solved.is_cut), 1);
@@ -216,7 +217,7 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
   // an allowance above that cost: the straight row, solved, without flips
   settings.rerouting_allowance = 2. * (row_distortion - wave_distortion);
   ic::Joint_state generous = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, generous), SMP::OK);
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, generous), SMP::OK);
   EXPECT_EQ(generous.is_cut, row_solved.is_cut);
   EXPECT_NEAR(ic::mean_distortion(generous.chart, generous.x), row_distortion, 1e-12);
   EXPECT_EQ(ic::number_of_flipped_faces(generous.chart, generous.x), 0);
@@ -226,18 +227,22 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
   // an allowance below it: the wave and its own map
   settings.rerouting_allowance = 0.5 * (row_distortion - wave_distortion);
   ic::Joint_state strict = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, strict), SMP::OK);
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, strict), SMP::OK);
   EXPECT_EQ(strict.is_cut, start.is_cut);
   EXPECT_NEAR(ic::mean_distortion(strict.chart, strict.x), wave_distortion, 1e-12);
 
-  // the user's seams (`keep`) are never rerouted; no rings, no rerouting
+  // the user's seams (`keep`) are never rerouted; seams solved from a Tutte
+  // map (carried from a simplified copy) are not either; no rings, no rerouting
   settings.rerouting_allowance = 1.;
   ic::Joint_state given = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, start.is_cut, true, given), SMP::OK);
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, start.is_cut, false, given), SMP::OK);
   EXPECT_EQ(given.is_cut, start.is_cut);
+  ic::Joint_state carried = start;
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, carried), SMP::OK);
+  EXPECT_EQ(carried.is_cut, start.is_cut);
   settings.rerouting_rings = 0;
   ic::Joint_state off = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, off), SMP::OK);
+  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, off), SMP::OK);
   EXPECT_EQ(off.is_cut, start.is_cut);
 }
 

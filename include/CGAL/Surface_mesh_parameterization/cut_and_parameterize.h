@@ -342,6 +342,13 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// 0.15 per unit of E_s it adds; then the final solve runs again. Not with
 /// `number_of_passes(0)` (the seams are then the given ones only).
 ///
+/// Without `distortion_bound`, where the alternation ran on the mesh itself
+/// (not on a simplified copy), the final solve of its seams runs alongside
+/// (on another core, with TBB) the final solve of the same seams rerouted
+/// along the cheapest edge paths between their nodes within one ring; the
+/// rerouted seams are kept if their E_d is at most 0.01 above. Both always
+/// run, so the result does not depend on the number of threads.
+///
 /// The result is a texture atlas: the final solve runs from the alternation's
 /// map; if a chart's UV border then crosses itself, that solve is redone from a
 /// Tutte embedding of the cut mesh with a border barrier energy term (each

@@ -288,15 +288,21 @@ inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_ma
   return status;
 }
 
-/// final_solve() of the cut mesh in `state`, and at once (parallel_invoke(),
-/// up to two_states_at_once_max_faces faces) the final solve, from a Tutte
-/// map, of the same seams rerouted within `settings.rerouting_rings` rings
-/// (seam_straightening.h, the ends fixed; the edges flagged in `keep` stay).
-/// The rerouted seams are kept if their E_d is at most that of the first
-/// solve plus `settings.rerouting_allowance`. Both solves always run and the
-/// choice reads both, so the result does not depend on the number of threads;
-/// the Newton counts add up. Above two_states_at_once_max_faces, only the
-/// first solve runs.
+/// final_solve() of the cut mesh in `state`, and at once (parallel_invoke())
+/// the final solve, from a Tutte map, of the same seams rerouted within
+/// `settings.rerouting_rings` rings (seam_straightening.h, the ends fixed;
+/// the edges flagged in `keep` stay). The rerouted seams are kept if their
+/// E_d is at most that of the first solve plus `settings.rerouting_allowance`.
+/// Both solves always run and the choice reads both, so the result does not
+/// depend on the number of threads; the Newton counts add up.
+///
+/// Only where the alternation ran on this mesh, from its map (not
+/// `from_tutte_map`), and up to two_states_at_once_max_faces faces. The
+/// seams carried from a simplified copy (multiresolution.h) are shortest
+/// paths already, and at those sizes the final solve is most of the time:
+/// two at once on 2 cores share the memory bandwidth (bimba_i_f10000
+/// refined to 160k faces: final solve 13.1 -> 25.5 s, the whole run 17.6 ->
+/// 30.4 s; CGAL's refined_elephant.off 32.3 -> 58.2 s).
 ///
 /// The field v opens its cuts along a band, through the mesh's edges: the
 /// seams zigzag. Measured on the 20 benchmark meshes (2 cores, rerouting
@@ -312,7 +318,7 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
 {
   Joint_state rerouted;
   bool have_rerouted = false;
-  if(settings.rerouting_rings > 0 && settings.passes > 0 && surface.number_of_faces() <= two_states_at_once_max_faces)
+  if(!from_tutte_map && settings.rerouting_rings > 0 && surface.number_of_faces() <= two_states_at_once_max_faces)
   {
     std::vector<char> cut = state.is_cut;
     if(straighten_seams(surface, state.rules, keep, settings.rerouting_rings, cut) > 0)
