@@ -123,9 +123,7 @@ Error_code straighten_under_bound(const Surface& surface, const Joint_settings& 
   for(bool slide : {false, true})
   {
     Joint_state candidate = state;
-    if(straighten_seams(surface, candidate.rules, keep, rings, candidate.is_cut, slide) == 0) continue;
-    build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
-    if(disk_charts_embedding(candidate.chart, candidate.x) != Embedding_status::OK) continue;
+    if(!rerouted_cut_mesh(surface, state, keep, rings, slide, candidate)) continue;
     bool kept = false;
     const Error_code status = solve_within_bound(settings, true, std::move(candidate), state, kept);
     if(status != OK) return status;

@@ -288,6 +288,19 @@ inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_ma
   return status;
 }
 
+/// `rerouted` becomes the cut mesh of the seams of `state` rerouted by
+/// straighten_seams() (`keep`, `rings`, `slide`: as there), with a Tutte map;
+/// false if no path was rerouted or the Tutte map failed.
+template <typename Surface>
+bool rerouted_cut_mesh(const Surface& surface, const Joint_state& state, const std::vector<char>& keep, int rings,
+                       bool slide, Joint_state& rerouted)
+{
+  rerouted.is_cut = state.is_cut;
+  if(straighten_seams(surface, state.rules, keep, rings, rerouted.is_cut, slide) == 0) return false;
+  build_chart_mesh(surface, rerouted.is_cut, rerouted.chart, rerouted.corner_uv);
+  return disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
+}
+
 /// final_solve() of the cut mesh in `state`, and at once (parallel_invoke())
 /// the final solve, from a Tutte map, of the same seams rerouted within
 /// `settings.rerouting_rings` rings (seam_straightening.h, the ends fixed;
@@ -319,17 +332,9 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
                                       const std::vector<char>& keep, bool from_tutte_map, Joint_state& state)
 {
   Joint_state rerouted;
-  bool have_rerouted = false;
-  if(!from_tutte_map && settings.rerouting_rings > 0 && surface.number_of_faces() <= two_states_at_once_max_faces)
-  {
-    std::vector<char> cut = state.is_cut;
-    if(straighten_seams(surface, state.rules, keep, settings.rerouting_rings, cut) > 0)
-    {
-      rerouted.is_cut = std::move(cut);
-      build_chart_mesh(surface, rerouted.is_cut, rerouted.chart, rerouted.corner_uv);
-      have_rerouted = disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
-    }
-  }
+  const bool have_rerouted = !from_tutte_map && settings.rerouting_rings > 0
+                             && surface.number_of_faces() <= two_states_at_once_max_faces
+                             && rerouted_cut_mesh(surface, state, keep, settings.rerouting_rings, false, rerouted);
   if(!have_rerouted) return final_solve(settings, from_tutte_map, state);
   Error_code first = OK, second = OK;
   parallel_invoke([&] { first = final_solve(settings, from_tutte_map, state); },
