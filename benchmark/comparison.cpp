@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ namespace {
 const double ED_TOLERANCE = 0.03;   // E_d <= ref E_d + 0.03
 const double ES_FACTOR = 1.25;      // E_s <= 1.25 ref E_s + 0.05
 const double ES_TOLERANCE = 0.05;
+// The baseline's figures are written with 10 significant digits: the same
+// seams read back may be longer by a rounding.
+const double BASELINE_ROUNDING = 1e-9;
+// The speed target: the reference's time / SPEED_TARGET or less.
+const double SPEED_TARGET = 7.;
 
 struct Row
 {
@@ -27,7 +33,9 @@ struct Row
   Run_result run;
   const Reference_figures* measured = nullptr;
   const Reference_figures* paper = nullptr;
+  const Reference_figures* baseline = nullptr;
   int ed_pass = -1, es_pass = -1;  // -1: no reference to compare with
+  int baseline_pass = -1;          // -1: no baseline figures
   double speedup = NaN;
 };
 
@@ -36,6 +44,8 @@ struct Row
 int run_comparison(const Options& opt)
 {
   const References refs = read_references(opt.reference_dir);
+  std::map<std::string, Reference_figures> baseline;
+  if(!opt.baseline_file.empty()) baseline = read_baseline(opt.baseline_file);
   std::vector<std::string> missing;
   const std::vector<Mesh_entry> meshes = mesh_list(opt, refs, missing);
   if(meshes.empty())
@@ -69,6 +79,13 @@ int run_comparison(const Options& opt)
     if(it != refs.measured.end()) row.measured = &it->second;
     auto jt = refs.paper.find(row.mesh.name);
     if(jt != refs.paper.end()) row.paper = &jt->second;
+    auto bt = baseline.find(row.mesh.name);
+    if(bt != baseline.end() && !std::isnan(bt->second.distortion) && !std::isnan(bt->second.seam_length))
+    {
+      row.baseline = &bt->second;
+      row.baseline_pass = row.run.ok && row.run.distortion <= row.baseline->distortion + BASELINE_ED_TOLERANCE
+                          && row.run.seam_length <= row.baseline->seam_length * (1. + BASELINE_ROUNDING);
+    }
     if(row.measured)
     {
       const double ref_ed = row.measured->distortion, ref_es = row.measured->seam_length;
@@ -86,7 +103,7 @@ int run_comparison(const Options& opt)
     {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"charts"}, {"flips"}, {"crossings"}, {"coverage"},
     {"E_d"}, {"E_s"},
     {"ref_t"}, {"ref_E_d"}, {"ref_E_s"}, {"T1_t"}, {"T1_E_d"}, {"T1_E_s"},
-    {"E_d_ok"}, {"E_s_ok"}, {"speedup"}, {"status", true}};
+    {"E_d_ok"}, {"E_s_ok"}, {"speedup"}, {"base_E_d"}, {"base_E_s"}, {"vs_base"}, {"status", true}};
   std::vector<std::vector<std::string>> cells;
   for(const auto& row : rows)
   {
@@ -113,6 +130,9 @@ int run_comparison(const Options& opt)
       pass_text(row.ed_pass),
       pass_text(row.es_pass),
       std::isnan(row.speedup) ? "-" : fixed(row.speedup, 2) + "x",
+      row.baseline ? fixed(row.baseline->distortion, 4) : "-",
+      row.baseline ? fixed(row.baseline->seam_length, 4) : "-",
+      pass_text(row.baseline_pass),
       r.status});
   }
 
@@ -126,9 +146,12 @@ int run_comparison(const Options& opt)
   // Summary.
   std::size_t compared = 0, passed = 0, failed_runs = 0, with_flips = 0, with_crossings = 0;
   double log_sum = 0.;
-  std::size_t n_speed = 0;
+  std::size_t n_speed = 0, fast_enough = 0, with_baseline = 0, as_good = 0;
   for(const auto& row : rows)
   {
+    if(!std::isnan(row.speedup) && row.speedup >= SPEED_TARGET) ++fast_enough;
+    if(row.baseline_pass >= 0) ++with_baseline;
+    if(row.baseline_pass > 0) ++as_good;
     if(!row.run.ok) ++failed_runs;
     if(row.run.ok && row.run.flipped > 0) ++with_flips;
     if(row.run.ok && row.run.crossings > 0) ++with_crossings;
@@ -141,6 +164,8 @@ int run_comparison(const Options& opt)
   }
   std::cout << "\nE_d_ok: E_d <= ref_E_d + " << ED_TOLERANCE << "; E_s_ok: E_s <= " << ES_FACTOR
             << " ref_E_s + " << ES_TOLERANCE << "; speedup = ref_t / time_s\n"
+            << "base_*: the baseline run (" << (opt.baseline_file.empty() ? std::string("none") : opt.baseline_file.lexically_normal().string())
+            << "); vs_base: E_d <= base_E_d + " << BASELINE_ED_TOLERANCE << " and E_s <= base_E_s\n"
             << "crossings: pairs of UV border segments that cross (overlaps; 0 for a valid atlas); "
                "coverage: UV area / area of the packing square\n"
             << "ref_*: reference implementation measured on this machine type "
@@ -173,8 +198,11 @@ int run_comparison(const Options& opt)
   if(with_crossings) std::cout << "; " << with_crossings << " with border crossings";
   if(!skipped_names.empty()) std::cout << "; " << skipped_names.size() << " skipped (--quick)";
   std::cout << "; geometric-mean speedup vs reference: ";
-  if(n_speed) std::cout << fixed(std::exp(log_sum / double(n_speed)), 2) << "x over " << n_speed << " meshes\n";
-  else std::cout << "-\n";
+  if(n_speed) std::cout << fixed(std::exp(log_sum / double(n_speed)), 2) << "x over " << n_speed << " meshes";
+  else std::cout << "-";
+  std::cout << "; speedup " << fixed(SPEED_TARGET, 0) << "x or more: " << fast_enough << "/" << n_speed;
+  if(with_baseline) std::cout << "; at least as good as the baseline: " << as_good << "/" << with_baseline;
+  std::cout << "\n";
 
   // CSV.
   if(!opt.csv_file.empty())
@@ -183,7 +211,7 @@ int run_comparison(const Options& opt)
     if(!csv) { std::cerr << "error: cannot write " << opt.csv_file << "\n"; return 1; }
     csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,crossings,coverage,E_d,E_s,"
            "ref_time_s,ref_E_d,ref_E_s,paper_time_s,paper_E_d,paper_E_s,"
-           "E_d_pass,E_s_pass,speedup,status\n";
+           "E_d_pass,E_s_pass,speedup,baseline_E_d,baseline_E_s,baseline_pass,status\n";
     for(const auto& row : rows)
     {
       const auto& r = row.run;
@@ -204,7 +232,10 @@ int run_comparison(const Options& opt)
           << (p ? full(p->time) : "") << "," << (p ? full(p->distortion) : "") << ","
           << (p ? full(p->seam_length) : "") << ","
           << pass_csv(row.ed_pass) << "," << pass_csv(row.es_pass) << ","
-          << full(row.speedup) << "," << csv_field(r.status) << "\n";
+          << full(row.speedup) << ","
+          << (row.baseline ? full(row.baseline->distortion) : "") << ","
+          << (row.baseline ? full(row.baseline->seam_length) : "") << ","
+          << pass_csv(row.baseline_pass) << "," << csv_field(r.status) << "\n";
     }
     std::cerr << "wrote " << opt.csv_file << "\n";
   }

@@ -54,6 +54,7 @@ int parse_options(int argc, char** argv, Options& opt)
 {
   opt.mesh_dir = project_root() / ".." / "shared" / "meshes";
   opt.reference_dir = project_root() / ".." / "shared" / "reference";
+  opt.baseline_file = project_root() / DEFAULT_BASELINE;
   CLI::App app(description, "benchmark_cut_parameterization");
   app.get_formatter()->column_width(30);
   const auto positive = CLI::PositiveNumber & CLI::Validator(
@@ -114,6 +115,13 @@ int parse_options(int argc, char** argv, Options& opt)
     ->type_name("N")->check(CLI::PositiveNumber);
   comparisons.push_back(app.add_option("--csv", opt.csv_file, "also write the table as CSV")
                           ->type_name("FILE")->group(comparison));
+  comparison_only.push_back(
+    app.add_option("--baseline", opt.baseline_file,
+                   "CSV of an earlier run (what --csv writes) to compare each mesh\n"
+                   "with: at least as good if E_d <= its E_d + 0.02 and E_s <= its E_s;\n"
+                   "default " + std::string(DEFAULT_BASELINE) + " (library defaults at the\n"
+                   "project's commit 8ae88e6); \"\" for none (default mode only)")
+      ->type_name("FILE")->group(comparison));
   comparison_only.push_back(
     app.add_flag("--quick", opt.quick, "only meshes with fewer than " + std::to_string(QUICK_MAX_FACES) + " faces\n"
                  "(default mode only)")

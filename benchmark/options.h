@@ -18,6 +18,12 @@ namespace fs = std::filesystem;
 const std::size_t QUICK_MAX_FACES = 5000;
 /// --scaling: meshes up to this many faces are run --repeat times, bigger ones once.
 const std::size_t SCALING_REPEAT_MAX_FACES = 40000;
+/// The default mode's baseline: the library's defaults measured on this
+/// machine type at the project's commit 8ae88e6, relative to the project root.
+const char* const DEFAULT_BASELINE = "benchmark/baseline_8ae88e6.csv";
+/// A run is at least as good as its baseline if E_d <= base E_d + this and
+/// E_s <= base E_s.
+const double BASELINE_ED_TOLERANCE = 0.02;
 /// --scaling: default time limit of one run, in seconds.
 const double SCALING_DEFAULT_TIME_LIMIT = 1800.;
 
@@ -35,6 +41,8 @@ struct Options
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;
+  // default mode: the figures of an earlier run to compare with (empty: none)
+  fs::path baseline_file;
 
   // --optcuts
   bool optcuts = false;

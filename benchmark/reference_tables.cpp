@@ -121,6 +121,26 @@ References read_references(const fs::path& dir)
   return refs;
 }
 
+std::map<std::string, Reference_figures> read_baseline(const fs::path& file)
+{
+  std::map<std::string, Reference_figures> baseline;
+  std::vector<Csv_row> rows;
+  if(!read_csv(file, rows))
+    std::cerr << "warning: cannot read " << file.string() << "\n";
+  for(const auto& row : rows)
+  {
+    const std::string name = text_in(row, "mesh");
+    if(name.empty()) continue;
+    Reference_figures r;
+    r.time = number_in(row, "time_s");
+    r.distortion = number_in(row, "E_d");
+    r.seam_length = number_in(row, "E_s");
+    r.status = text_in(row, "status");
+    baseline[name] = r;
+  }
+  return baseline;
+}
+
 std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir)
 {
   std::vector<Optcuts_figures> table;

@@ -59,6 +59,11 @@ struct Optcuts_figures
   Reference_figures reached;
 };
 
+/// Figures of an earlier run of this benchmark, by mesh name: the CSV that
+/// --csv wrote (columns mesh, time_s, E_d, E_s). Empty (reported on
+/// std::cerr) if the file cannot be read.
+std::map<std::string, Reference_figures> read_baseline(const fs::path& file);
+
 /// The rows of `dir`/optcuts_equal_distortion.csv, in the file's order; empty
 /// (reported on std::cerr) if the file cannot be read.
 std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir);
