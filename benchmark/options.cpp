@@ -169,6 +169,11 @@ int parse_options(int argc, char** argv, Options& opt)
     if(!trim(name).empty()) opt.meshes.push_back(trim(name));
   if(app.count("--meshes") && opt.meshes.empty()) { std::cerr << "error: --meshes: empty list\n"; return 2; }
   if(opt.optcuts_bound) opt.optcuts = true;
+  // the default baseline holds the library's defaults: with other method
+  // parameters, no comparison unless a baseline is named
+  const bool other_parameters = opt.lambda || opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps
+                                || opt.multiresolution_faces;
+  if(other_parameters && app.count("--baseline") == 0) opt.baseline_file.clear();
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
   // an option of another mode than the one run
   auto misplaced = [](const std::vector<CLI::Option*>& options, const std::string& why) {
