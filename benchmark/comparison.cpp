@@ -45,7 +45,11 @@ int run_comparison(const Options& opt)
 {
   const References refs = read_references(opt.reference_dir);
   std::map<std::string, Reference_figures> baseline;
-  if(!opt.baseline_file.empty()) baseline = read_baseline(opt.baseline_file);
+  if(!opt.baseline_file.empty() && !read_baseline(opt.baseline_file, baseline))
+  {
+    std::cerr << "error: cannot read the baseline " << opt.baseline_file.string() << " (--baseline \"\" for none)\n";
+    return 2;
+  }
   std::vector<std::string> missing;
   const std::vector<Mesh_entry> meshes = mesh_list(opt, refs, missing);
   if(meshes.empty())

@@ -121,12 +121,10 @@ References read_references(const fs::path& dir)
   return refs;
 }
 
-std::map<std::string, Reference_figures> read_baseline(const fs::path& file)
+bool read_baseline(const fs::path& file, std::map<std::string, Reference_figures>& baseline)
 {
-  std::map<std::string, Reference_figures> baseline;
   std::vector<Csv_row> rows;
-  if(!read_csv(file, rows))
-    std::cerr << "warning: cannot read " << file.string() << "\n";
+  if(!read_csv(file, rows)) return false;
   for(const auto& row : rows)
   {
     const std::string name = text_in(row, "mesh");
@@ -138,7 +136,7 @@ std::map<std::string, Reference_figures> read_baseline(const fs::path& file)
     r.status = text_in(row, "status");
     baseline[name] = r;
   }
-  return baseline;
+  return true;
 }
 
 std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir)

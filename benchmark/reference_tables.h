@@ -60,9 +60,9 @@ struct Optcuts_figures
 };
 
 /// Figures of an earlier run of this benchmark, by mesh name: the CSV that
-/// --csv wrote (columns mesh, time_s, E_d, E_s). Empty (reported on
-/// std::cerr) if the file cannot be read.
-std::map<std::string, Reference_figures> read_baseline(const fs::path& file);
+/// --csv wrote (columns mesh, time_s, E_d, E_s). False if the file cannot be
+/// read.
+bool read_baseline(const fs::path& file, std::map<std::string, Reference_figures>& baseline);
 
 /// The rows of `dir`/optcuts_equal_distortion.csv, in the file's order; empty
 /// (reported on std::cerr) if the file cannot be read.
