@@ -64,6 +64,17 @@ std::string text_in(const Csv_row& row, const std::string& column)
   return it == row.end() ? std::string() : it->second;
 }
 
+/// The time, E_d and E_s of a row, from the columns so named.
+Reference_figures figures_in(const Csv_row& row, const std::string& time, const std::string& distortion = "E_d",
+                             const std::string& seam_length = "E_s")
+{
+  Reference_figures r;
+  r.time = number_in(row, time);
+  r.distortion = number_in(row, distortion);
+  r.seam_length = number_in(row, seam_length);
+  return r;
+}
+
 } // namespace
 
 std::string stem_of(const std::string& name)
@@ -91,10 +102,7 @@ References read_references(const fs::path& dir)
   {
     const std::string name = text_in(row, "mesh");
     if(name.empty()) continue;
-    Reference_figures r;
-    r.time = number_in(row, "median_time_s");
-    r.distortion = number_in(row, "E_d");
-    r.seam_length = number_in(row, "E_s");
+    Reference_figures r = figures_in(row, "median_time_s");
     r.status = text_in(row, "status");
     if(!refs.measured.count(name)) refs.measured_order.push_back(name);
     refs.measured[name] = r;
@@ -109,10 +117,7 @@ References read_references(const fs::path& dir)
     const std::string file = text_in(row, "mesh_file");
     const std::string model = text_in(row, "model");
     if(file.empty()) { refs.paper_without_file.push_back(model); continue; }
-    Reference_figures r;
-    r.time = number_in(row, "at_time_s");
-    r.distortion = number_in(row, "at_distortion");
-    r.seam_length = number_in(row, "at_cut_length");
+    Reference_figures r = figures_in(row, "at_time_s", "at_distortion", "at_cut_length");
     r.model = model;
     const std::string stem = stem_of(file);
     if(!refs.paper.count(stem)) refs.paper_files.push_back(file);
@@ -129,12 +134,8 @@ bool read_baseline(const fs::path& file, std::map<std::string, Reference_figures
   {
     const std::string name = text_in(row, "mesh");
     if(name.empty()) continue;
-    Reference_figures r;
-    r.time = number_in(row, "time_s");
-    r.distortion = number_in(row, "E_d");
-    r.seam_length = number_in(row, "E_s");
-    r.status = text_in(row, "status");
-    baseline[name] = r;
+    baseline[name] = figures_in(row, "time_s");
+    baseline[name].status = text_in(row, "status");
   }
   return true;
 }
@@ -152,9 +153,7 @@ std::vector<Optcuts_figures> read_optcuts_figures(const fs::path& dir)
     f.mesh = text_in(row, "mesh");
     if(f.mesh.empty()) continue;
     f.bound = number_in(row, "bound");
-    f.reached.time = number_in(row, "time_s");
-    f.reached.distortion = number_in(row, "E_d");
-    f.reached.seam_length = number_in(row, "E_s");
+    f.reached = figures_in(row, "time_s");
     table.push_back(std::move(f));
   }
   return table;
