@@ -55,6 +55,7 @@ int parse_options(int argc, char** argv, Options& opt)
   opt.mesh_dir = project_root() / ".." / "shared" / "meshes";
   opt.reference_dir = project_root() / ".." / "shared" / "reference";
   opt.baseline_file = project_root() / DEFAULT_BASELINE;
+  opt.frontier_file = project_root() / DEFAULT_BASELINE_FRONTIER;
   CLI::App app(description, "benchmark_cut_parameterization");
   app.get_formatter()->column_width(30);
   const auto positive = CLI::PositiveNumber & CLI::Validator(
@@ -123,6 +124,14 @@ int parse_options(int argc, char** argv, Options& opt)
                    "project's commit 8ae88e6); \"\" for none (default mode only)")
       ->type_name("FILE")->group(comparison));
   comparison_only.push_back(
+    app.add_option("--baseline-frontier", opt.frontier_file,
+                   "CSV of the baseline run with other seam costs (columns mesh, E_d,\n"
+                   "E_s; a row per run): a mesh is also at least as good as the baseline\n"
+                   "if its E_s is at most the frontier's at its E_d (lower envelope, linear\n"
+                   "between runs); default " + std::string(DEFAULT_BASELINE_FRONTIER) + ";\n"
+                   "\"\" for none (default mode only)")
+      ->type_name("FILE")->group(comparison));
+  comparison_only.push_back(
     app.add_flag("--quick", opt.quick, "only meshes with fewer than " + std::to_string(QUICK_MAX_FACES) + " faces\n"
                  "(default mode only)")
       ->group(comparison));
@@ -174,6 +183,9 @@ int parse_options(int argc, char** argv, Options& opt)
   const bool other_parameters = opt.lambda || opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps
                                 || opt.multiresolution_faces;
   if(other_parameters && app.count("--baseline") == 0) opt.baseline_file.clear();
+  // the frontier covers other seam costs: only the other method parameters clear it
+  const bool other_method = opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps || opt.multiresolution_faces;
+  if(other_method && app.count("--baseline-frontier") == 0) opt.frontier_file.clear();
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
   // an option of another mode than the one run
   auto misplaced = [](const std::vector<CLI::Option*>& options, const std::string& why) {

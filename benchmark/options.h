@@ -21,8 +21,11 @@ const std::size_t SCALING_REPEAT_MAX_FACES = 40000;
 /// The default mode's baseline: the library's defaults measured on this
 /// machine type at the project's commit 8ae88e6, relative to the project root.
 const char* const DEFAULT_BASELINE = "benchmark/baseline_8ae88e6.csv";
+/// The baseline's frontier: the same commit run with other seam costs λ
+/// (mesh, lambda, E_d, E_s), relative to the project root.
+const char* const DEFAULT_BASELINE_FRONTIER = "benchmark/baseline_8ae88e6_frontier.csv";
 /// A run is at least as good as its baseline if E_d <= base E_d + this and
-/// E_s <= base E_s.
+/// E_s <= base E_s, or if E_s is at most the baseline frontier's at its E_d.
 const double BASELINE_ED_TOLERANCE = 0.02;
 /// --scaling: default time limit of one run, in seconds.
 const double SCALING_DEFAULT_TIME_LIMIT = 1800.;
@@ -43,6 +46,8 @@ struct Options
   bool quick = false;
   // default mode: the figures of an earlier run to compare with (empty: none)
   fs::path baseline_file;
+  // default mode: the baseline's runs with other seam costs (empty: none)
+  fs::path frontier_file;
 
   // --optcuts
   bool optcuts = false;

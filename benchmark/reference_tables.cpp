@@ -3,6 +3,7 @@
 #include "text_parsing.h"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 
@@ -136,6 +137,20 @@ bool read_baseline(const fs::path& file, std::map<std::string, Reference_figures
     if(name.empty()) continue;
     baseline[name] = figures_in(row, "time_s");
     baseline[name].status = text_in(row, "status");
+  }
+  return true;
+}
+
+bool read_frontier(const fs::path& file, std::map<std::string, std::vector<Frontier_point>>& frontier)
+{
+  std::vector<Csv_row> rows;
+  if(!read_csv(file, rows)) return false;
+  for(const auto& row : rows)
+  {
+    const std::string name = text_in(row, "mesh");
+    const double distortion = number_in(row, "E_d"), seam_length = number_in(row, "E_s");
+    if(!name.empty() && !std::isnan(distortion) && !std::isnan(seam_length))
+      frontier[name].emplace_back(distortion, seam_length);
   }
   return true;
 }

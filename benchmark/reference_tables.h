@@ -5,6 +5,8 @@
 #ifndef CUT_PARAM_BENCHMARK_REFERENCE_TABLES_H
 #define CUT_PARAM_BENCHMARK_REFERENCE_TABLES_H
 
+#include "frontier.h"
+
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -63,6 +65,11 @@ struct Optcuts_figures
 /// --csv wrote (columns mesh, time_s, E_d, E_s). False if the file cannot be
 /// read.
 bool read_baseline(const fs::path& file, std::map<std::string, Reference_figures>& baseline);
+
+/// The baseline's frontier by mesh name: (E_d, E_s) of the rows of a CSV with
+/// columns mesh, E_d, E_s (one row per run, e.g. one per seam cost λ). False
+/// if the file cannot be read.
+bool read_frontier(const fs::path& file, std::map<std::string, std::vector<Frontier_point>>& frontier);
 
 /// The rows of `dir`/optcuts_equal_distortion.csv, in the file's order; empty
 /// (reported on std::cerr) if the file cannot be read.
