@@ -181,111 +181,134 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   return OK;
 }
 
-/// The final solve on the cut mesh (weights 1), from the map of the
+/// One Newton minimization of the final solve on the cut mesh of `state`
+/// (weights 1), with the border barrier if `injective` and a box of
+/// `stiffness` (0: none). It ends at `settings.constrained_tolerance` under
+/// the barrier or where a box's solve follows (`boxed`), else at
+/// `settings.final_tolerance` (measured on CGAL's man.off, 35k faces: 247 ->
+/// 115 Newton iterations for the solve before the box, the same E_d after it).
+inline Error_code final_minimization(const Joint_settings& settings, bool injective, double stiffness, bool boxed,
+                                     Joint_state& state)
+{
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(state.chart.number_of_faces(), 1.), injective,
+                                 stiffness > 0. ? settings.bounding_box_aspect_ratio : 0., stiffness);
+  const double tolerance = injective || boxed ? settings.constrained_tolerance : settings.final_tolerance;
+  const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, tolerance);
+  state.newton_iterations += report.iterations;
+  state.factorizations += report.factorizations;
+  return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+}
+
+/// The box's stiffness of the final solve under `settings` (0: no box).
+inline double final_box_stiffness(const Joint_settings& settings)
+{
+  return settings.bounding_box_aspect_ratio > 0. ? settings.bounding_box_stiffness : 0.;
+}
+
+/// What the final solve without box leaves to the box's solve.
+struct Unboxed_final_map
+{
+  double distortion = 0.; // E_d of the map without box (before any restart)
+  bool barrier = false;   // the border barrier is on (it stays on)
+  bool restart = false;   // a chart crossed itself and starts again from its Tutte map
+};
+
+/// The final solve on the cut mesh without the box, from the map of the
 /// alternation. With global injectivity, if a chart's border then crosses
-/// itself, the solve is redone with the border barrier, which keeps borders
-/// from crossing, from a Tutte embedding (whose border is convex) of each
-/// chart that crossed; the other charts start from where they are. The
-/// alternation's map is no start for it: its new cuts are slits of zero
-/// width, whose sides touch (with the scaffold used before the barrier, a
-/// slit opened just a little stayed almost closed: venus E_d 4.77 from
+/// itself, the chart is put back to its Tutte embedding (whose border is
+/// convex) for final_solve_box() to solve again, with the box at once and
+/// the border barrier that keeps borders from crossing. The other charts
+/// start from where they are. The alternation's map is no start for it: its new cuts are slits of
+/// zero width, whose sides touch (with the scaffold used before the barrier,
+/// a slit opened just a little stayed almost closed: venus E_d 4.77 from
 /// there, 4.37 from Tutte; hand1 7.5 and 4.58).
 ///
 /// From a Tutte map (`from_tutte_map`: the multiresolution path, where the
-/// alternation ran on the simplified copy, or no pass at all) the barrier is
-/// on from the first solve: the solve without it would only find out
-/// whether a border crosses, then start again from the same map. Measured
-/// (2 cores), final solve without / with the barrier first: bimba_i_f10000
-/// refined to 160k faces 17 + 62 -> 29 + 39 Newton iterations (the second
-/// number: the box's solve), 29.2 -> 23.8 s, E_d 4.2811 both;
-/// refined_elephant.off 62 + 173 -> 78 + 67, 33.8 -> 21.1 s, E_d 4.1910 ->
-/// 4.1874; refined to 40k 20 + 44 -> 35 + 31, 4.3 -> 4.6 s, E_d 4.3275 ->
-/// 4.3271.
-///
-/// The bounding box, if any, comes last, from the converged map without it:
-/// pulled by the box from the alternation's map, a chart crossed itself more
-/// often (bunny, tooth), and every crossing costs an injective solve from Tutte.
-/// If the box makes a border cross, its solve is redone with the barrier
-/// from the crossing-free map without box (slits open by then). If the box
-/// raises E_d over the map without it by more than the budget, it is weakened
-/// (stiffness x 0.7) and the solve redone from the boxed map, at most twice,
-/// then dropped.
-inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_map, Joint_state& state)
+/// alternation ran on the simplified copy, the rerouted seams, or no pass at
+/// all) the barrier is on from the first solve: the solve without it would
+/// only find out whether a border crosses, then start again from the same
+/// map. Measured (2 cores), final solve without / with the barrier first:
+/// bimba_i_f10000 refined to 160k faces 17 + 62 -> 29 + 39 Newton
+/// iterations (the second number: the box's solve), 29.2 -> 23.8 s, E_d
+/// 4.2811 both; refined_elephant.off 62 + 173 -> 78 + 67, 33.8 -> 21.1 s,
+/// E_d 4.1910 -> 4.1874; refined to 40k 20 + 44 -> 35 + 31, 4.3 -> 4.6 s,
+/// E_d 4.3275 -> 4.3271.
+inline Error_code final_solve_without_box(const Joint_settings& settings, bool from_tutte_map, Joint_state& state,
+                                          Unboxed_final_map& unboxed)
 {
-  const std::vector<double> ones(state.chart.number_of_faces(), 1.);
-  double stiffness = settings.bounding_box_aspect_ratio > 0. ? settings.bounding_box_stiffness : 0.;
-  const double box = stiffness;
-  auto solve = [&](bool injective, double stiffness) {
-    Distortion_minimizer minimizer(state.chart, ones, injective, stiffness > 0. ? settings.bounding_box_aspect_ratio : 0.,
-                                   stiffness);
-    // without box, this solve gives the result: to final_tolerance; with a box,
-    // the box's solve follows from here and ends at constrained_tolerance
-    // (measured on CGAL's man.off, 35k faces: 247 -> 115 Newton iterations for
-    // this solve, the same E_d after the box)
-    const double tolerance = injective || box > 0. ? settings.constrained_tolerance : settings.final_tolerance;
-    const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, tolerance);
-    state.newton_iterations += report.iterations;
-    state.factorizations += report.factorizations;
-    return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  };
-  // from a crossing-free map: without barrier first (cheaper), with it if a border then crosses
-  auto solve_keeping_borders = [&](double stiffness) {
-    const UV_vector start = state.x;
-    const Error_code status = solve(false, stiffness);
-    if(status != OK || !settings.global_injectivity || !Border_barrier_term(state.chart).has_crossing(state.x))
-      return status;
-    state.x = start;
-    return solve(true, stiffness);
-  };
   const bool barrier_first = settings.global_injectivity && from_tutte_map;
-  Error_code status = solve(barrier_first, 0.);
+  const Error_code status = final_minimization(settings, barrier_first, 0., final_box_stiffness(settings) > 0., state);
   if(status != OK) return status;
-  const double unboxed = mean_distortion(state.chart, state.x);
-  bool barrier = barrier_first; // once on, every later solve keeps the barrier
-  if(barrier_first && stiffness > 0.) status = solve(true, stiffness);
-  if(settings.global_injectivity && !barrier_first)
-  {
-    const std::vector<char> crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
-    if(std::find(crossing.begin(), crossing.end(), 1) != crossing.end())
-    {
-      // only the charts that overlap themselves start again, from their Tutte map
-      UV_vector tutte;
-      const Embedding_status embedding = disk_charts_embedding(state.chart, tutte);
-      if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
-      if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
-      int charts = 0;
-      const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
-      for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
-        if(crossing[chart_of_face[f]])
-          for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
-      barrier = true;
-      status = solve(true, stiffness);
-    }
-  }
-  // the box's solve starts from a map without crossing border: with global
-  // injectivity it runs under the barrier at once (a box solve that crossed
-  // was done twice: bunnyhead 23 + 39 + 38 -> 23 + 38 Newton iterations,
-  // bunny 204 -> 168 in all, the same E_d; the other meshes of the
-  // benchmark did not cross and are unchanged)
-  if(!barrier && stiffness > 0. && settings.global_injectivity)
-  {
-    barrier = true;
-    status = solve(true, stiffness);
-  }
-  if(!barrier && stiffness > 0.) status = solve_keeping_borders(stiffness);
+  unboxed.distortion = mean_distortion(state.chart, state.x);
+  unboxed.barrier = barrier_first;
+  if(!settings.global_injectivity || barrier_first) return OK;
+  const std::vector<char> crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
+  if(std::find(crossing.begin(), crossing.end(), 1) == crossing.end()) return OK;
+  UV_vector tutte;
+  const Embedding_status embedding = disk_charts_embedding(state.chart, tutte);
+  if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
+  if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
+  int charts = 0;
+  const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
+  for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
+    if(crossing[chart_of_face[f]])
+      for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = tutte.segment<2>(2 * v);
+  unboxed.barrier = unboxed.restart = true;
+  return OK;
+}
+
+/// The rest of the final solve after final_solve_without_box(): the charts
+/// put back to their Tutte map solved again under the barrier (with the
+/// box, if any), and the bounding box's solve. The box comes last, from the
+/// converged map without it: pulled by the box from the alternation's map, a
+/// chart crossed itself more often (bunny, tooth), and every crossing costs
+/// an injective solve from Tutte.
+///
+/// With global injectivity the box's solve runs under the barrier at once (a
+/// box solve that crossed was done twice: bunnyhead 23 + 39 + 38 -> 23 + 38
+/// Newton iterations, bunny 204 -> 168 in all, the same E_d; the other
+/// meshes of the benchmark did not cross and are unchanged). Without it, if
+/// the box makes a border cross, its solve is redone with the barrier from
+/// the map without box. If the box raises E_d over the map without it by
+/// more than the budget (or above the ceiling, where the map without box is
+/// below it), it is weakened (stiffness x 0.7) and the solve redone from the
+/// boxed map, at most twice, then dropped.
+inline Error_code final_solve_box(const Joint_settings& settings, const Unboxed_final_map& unboxed, Joint_state& state)
+{
+  double stiffness = final_box_stiffness(settings);
+  const bool barrier = unboxed.barrier || (stiffness > 0. && settings.global_injectivity);
+  // from a crossing-free map: without barrier first (cheaper), with it if a border then crosses
+  auto solve = [&](double s) {
+    if(barrier) return final_minimization(settings, true, s, stiffness > 0., state);
+    const UV_vector start = state.x;
+    const Error_code status = final_minimization(settings, false, s, true, state);
+    if(status != OK || !Border_barrier_term(state.chart).has_crossing(state.x)) return status;
+    state.x = start;
+    return final_minimization(settings, true, s, true, state);
+  };
+  Error_code status = OK;
+  if(unboxed.restart || stiffness > 0.) status = solve(stiffness);
   // the box's cost in distortion, over the map without box, stays within the budget
   // and below the ceiling where the map without box is
-  const double ceiling = unboxed <= settings.bounding_box_distortion_ceiling
+  const double ceiling = unboxed.distortion <= settings.bounding_box_distortion_ceiling
                            ? settings.bounding_box_distortion_ceiling : std::numeric_limits<double>::infinity();
-  const double highest = (std::min)(unboxed + settings.bounding_box_distortion_budget, ceiling);
+  const double highest = (std::min)(unboxed.distortion + settings.bounding_box_distortion_budget, ceiling);
   for(int weaker = 0; status == OK && stiffness > 0. && weaker < 3 && mean_distortion(state.chart, state.x) > highest;
       ++weaker)
   {
     stiffness = weaker < 2 ? 0.7 * stiffness : 0.;
-    status = barrier ? solve(true, stiffness) : solve_keeping_borders(stiffness);
+    status = solve(stiffness);
   }
   return status;
+}
+
+/// The final solve: final_solve_without_box(), then final_solve_box().
+inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_map, Joint_state& state)
+{
+  Unboxed_final_map unboxed;
+  const Error_code status = final_solve_without_box(settings, from_tutte_map, state, unboxed);
+  return status != OK ? status : final_solve_box(settings, unboxed, state);
 }
 
 /// `rerouted` becomes the cut mesh of the seams of `state` rerouted by
@@ -301,13 +324,21 @@ bool rerouted_cut_mesh(const Surface& surface, const Joint_state& state, const s
   return disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
 }
 
-/// final_solve() of the cut mesh in `state`, and at once (parallel_invoke())
-/// the final solve, from a Tutte map, of the same seams rerouted within
-/// `settings.rerouting_rings` rings (seam_straightening.h, the ends fixed;
-/// the edges flagged in `keep` stay). The rerouted seams are kept if their
-/// E_d is at most that of the first solve plus `settings.rerouting_allowance`.
-/// Both solves always run and the choice reads both, so the result does not
-/// depend on the number of threads; the Newton counts add up.
+/// final_solve() of the cut mesh in `state`, or of the same seams rerouted
+/// within `settings.rerouting_rings` rings (seam_straightening.h, the ends
+/// fixed; the edges flagged in `keep` stay), solved from a Tutte map. Both
+/// are solved without box at once (parallel_invoke()), and the rerouted
+/// seams are kept if their E_d is at most that of the first plus
+/// `settings.rerouting_allowance`; then only the seams kept get the box's
+/// solve (final_solve_box()). Where the first map crossed itself (its E_d
+/// without box is then that of an invalid map), both are solved through,
+/// the box included, and compared after it. Both solves always run and the
+/// choice reads both, so the result does not depend on the number of
+/// threads; the Newton counts add up.
+///
+/// Choosing before the box gives the same results as choosing after it on
+/// the 20 benchmark meshes (E_d, E_s and coverage), the box's solve of the
+/// seams not kept left out: 6188 -> 5978 Newton iterations over the 20.
 ///
 /// Only where the alternation ran on this mesh, from its map (not
 /// `from_tutte_map`), and up to two_states_at_once_max_faces faces. The
@@ -337,19 +368,35 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
                              && rerouted_cut_mesh(surface, state, keep, settings.rerouting_rings, false, rerouted);
   if(!have_rerouted) return final_solve(settings, from_tutte_map, state);
   Error_code first = OK, second = OK;
-  parallel_invoke([&] { first = final_solve(settings, from_tutte_map, state); },
-                  [&] { second = final_solve(settings, true, rerouted); });
+  Unboxed_final_map unboxed, rerouted_unboxed;
+  parallel_invoke([&] { first = final_solve_without_box(settings, from_tutte_map, state, unboxed); },
+                  [&] { second = final_solve_without_box(settings, true, rerouted, rerouted_unboxed); });
   if(first != OK) return first;
+  bool keep_rerouted = false;
+  const bool solved_through = unboxed.restart;
+  if(solved_through)
+  {
+    // the first map crossed itself: its E_d without box is not yet that of a
+    // valid map, so both are solved through and compared after the box
+    parallel_invoke([&] { first = final_solve_box(settings, unboxed, state); },
+                    [&] { if(second == OK) second = final_solve_box(settings, rerouted_unboxed, rerouted); });
+    if(first != OK) return first;
+    keep_rerouted = second == OK && mean_distortion(rerouted.chart, rerouted.x)
+                                      <= mean_distortion(state.chart, state.x) + settings.rerouting_allowance;
+  }
+  else
+    keep_rerouted = second == OK && rerouted_unboxed.distortion <= unboxed.distortion + settings.rerouting_allowance;
   state.newton_iterations += rerouted.newton_iterations;
   state.factorizations += rerouted.factorizations;
-  if(second != OK
-     || !(mean_distortion(rerouted.chart, rerouted.x) <= mean_distortion(state.chart, state.x) + settings.rerouting_allowance))
-    return OK;
-  state.is_cut = std::move(rerouted.is_cut);
-  state.chart = std::move(rerouted.chart);
-  state.corner_uv = std::move(rerouted.corner_uv);
-  state.x = std::move(rerouted.x);
-  return OK;
+  if(keep_rerouted)
+  {
+    state.is_cut = std::move(rerouted.is_cut);
+    state.chart = std::move(rerouted.chart);
+    state.corner_uv = std::move(rerouted.corner_uv);
+    state.x = std::move(rerouted.x);
+    unboxed = rerouted_unboxed;
+  }
+  return solved_through ? OK : final_solve_box(settings, unboxed, state);
 }
 
 /// At most `iterations` Newton iterations on the map of `s` (weights 1, no
