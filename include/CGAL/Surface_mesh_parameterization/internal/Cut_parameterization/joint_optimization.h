@@ -218,10 +218,10 @@ struct Unboxed_final_map
 /// itself, the chart is put back to its Tutte embedding (whose border is
 /// convex) for final_solve_box() to solve again, with the box at once and
 /// the border barrier that keeps borders from crossing. The other charts
-/// start from where they are. The alternation's map is no start for it: its new cuts are slits of
-/// zero width, whose sides touch (with the scaffold used before the barrier,
-/// a slit opened just a little stayed almost closed: venus E_d 4.77 from
-/// there, 4.37 from Tutte; hand1 7.5 and 4.58).
+/// start from where they are. The alternation's map is no start for it: its
+/// new cuts are slits of zero width, whose sides touch (with the scaffold
+/// used before the barrier, a slit opened just a little stayed almost
+/// closed: venus E_d 4.77 from there, 4.37 from Tutte; hand1 7.5 and 4.58).
 ///
 /// From a Tutte map (`from_tutte_map`: the multiresolution path, where the
 /// alternation ran on the simplified copy, the rerouted seams, or no pass at
@@ -268,25 +268,16 @@ inline Error_code final_solve_without_box(const Joint_settings& settings, bool f
 /// With global injectivity the box's solve runs under the barrier at once (a
 /// box solve that crossed was done twice: bunnyhead 23 + 39 + 38 -> 23 + 38
 /// Newton iterations, bunny 204 -> 168 in all, the same E_d; the other
-/// meshes of the benchmark did not cross and are unchanged). Without it, if
-/// the box makes a border cross, its solve is redone with the barrier from
-/// the map without box. If the box raises E_d over the map without it by
-/// more than the budget (or above the ceiling, where the map without box is
-/// below it), it is weakened (stiffness x 0.7) and the solve redone from the
-/// boxed map, at most twice, then dropped.
+/// meshes of the benchmark did not cross and are unchanged); without global
+/// injectivity, without the barrier. If the box raises E_d over the map
+/// without it by more than the budget (or above the ceiling, where the map
+/// without box is below it), it is weakened (stiffness x 0.7) and the solve
+/// redone from the boxed map, at most twice, then dropped.
 inline Error_code final_solve_box(const Joint_settings& settings, const Unboxed_final_map& unboxed, Joint_state& state)
 {
   double stiffness = final_box_stiffness(settings);
   const bool barrier = unboxed.barrier || (stiffness > 0. && settings.global_injectivity);
-  // from a crossing-free map: without barrier first (cheaper), with it if a border then crosses
-  auto solve = [&](double s) {
-    if(barrier) return final_minimization(settings, true, s, stiffness > 0., state);
-    const UV_vector start = state.x;
-    const Error_code status = final_minimization(settings, false, s, true, state);
-    if(status != OK || !Border_barrier_term(state.chart).has_crossing(state.x)) return status;
-    state.x = start;
-    return final_minimization(settings, true, s, true, state);
-  };
+  auto solve = [&](double s) { return final_minimization(settings, barrier, s, true, state); };
   Error_code status = OK;
   if(unboxed.restart || stiffness > 0.) status = solve(stiffness);
   // the box's cost in distortion, over the map without box, stays within the budget
