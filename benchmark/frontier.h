@@ -16,9 +16,10 @@ namespace cut_benchmark {
 using Frontier_point = std::pair<double, double>;
 
 /// E_s of the frontier of `points` at E_d `distortion`: the lower envelope of
-/// the points (those that no point of lower E_d beats on E_s), linear between
-/// two of them, constant after the last; NaN below the least E_d (the
-/// baseline never went that low) or without points.
+/// the points (those that no point of lower or equal E_d beats on E_s; their
+/// E_d rise strictly), linear between two of them, constant after the last;
+/// NaN below the least E_d (the baseline never went that low) or without
+/// points.
 inline double frontier_seam_length(std::vector<Frontier_point> points, double distortion)
 {
   const double none = std::numeric_limits<double>::quiet_NaN();
@@ -32,8 +33,7 @@ inline double frontier_seam_length(std::vector<Frontier_point> points, double di
     const Frontier_point& a = envelope[i];
     const Frontier_point& b = envelope[i + 1];
     if(distortion <= b.first)
-      return b.first > a.first ? a.second + (distortion - a.first) / (b.first - a.first) * (b.second - a.second)
-                               : (std::min)(a.second, b.second);
+      return a.second + (distortion - a.first) / (b.first - a.first) * (b.second - a.second);
   }
   return envelope.back().second;
 }

@@ -180,11 +180,9 @@ int parse_options(int argc, char** argv, Options& opt)
   if(opt.optcuts_bound) opt.optcuts = true;
   // the default baseline holds the library's defaults: with other method
   // parameters, no comparison unless a baseline is named
-  const bool other_parameters = opt.lambda || opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps
-                                || opt.multiresolution_faces;
-  if(other_parameters && app.count("--baseline") == 0) opt.baseline_file.clear();
-  // the frontier covers other seam costs: only the other method parameters clear it
+  // (the frontier covers other seam costs λ: only the other parameters clear it)
   const bool other_method = opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps || opt.multiresolution_faces;
+  if((other_method || opt.lambda) && app.count("--baseline") == 0) opt.baseline_file.clear();
   if(other_method && app.count("--baseline-frontier") == 0) opt.frontier_file.clear();
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
   // an option of another mode than the one run

@@ -363,23 +363,22 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
   parallel_invoke([&] { first = final_solve_without_box(settings, from_tutte_map, state, unboxed); },
                   [&] { second = final_solve_without_box(settings, true, rerouted, rerouted_unboxed); });
   if(first != OK) return first;
-  bool keep_rerouted = false;
+  // where the first map crossed itself, its E_d without box is not yet that
+  // of a valid map: both are solved through and compared after the box
   const bool solved_through = unboxed.restart;
   if(solved_through)
   {
-    // the first map crossed itself: its E_d without box is not yet that of a
-    // valid map, so both are solved through and compared after the box
     parallel_invoke([&] { first = final_solve_box(settings, unboxed, state); },
                     [&] { if(second == OK) second = final_solve_box(settings, rerouted_unboxed, rerouted); });
     if(first != OK) return first;
-    keep_rerouted = second == OK && mean_distortion(rerouted.chart, rerouted.x)
-                                      <= mean_distortion(state.chart, state.x) + settings.rerouting_allowance;
   }
-  else
-    keep_rerouted = second == OK && rerouted_unboxed.distortion <= unboxed.distortion + settings.rerouting_allowance;
+  auto distortion = [&](const Joint_state& s, const Unboxed_final_map& u) {
+    return solved_through ? mean_distortion(s.chart, s.x) : u.distortion;
+  };
   state.newton_iterations += rerouted.newton_iterations;
   state.factorizations += rerouted.factorizations;
-  if(keep_rerouted)
+  if(second == OK
+     && distortion(rerouted, rerouted_unboxed) <= distortion(state, unboxed) + settings.rerouting_allowance)
   {
     state.is_cut = std::move(rerouted.is_cut);
     state.chart = std::move(rerouted.chart);
