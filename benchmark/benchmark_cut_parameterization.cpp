@@ -15,11 +15,12 @@
 #include "options.h"
 #include "scaling.h"
 
-#include "blas_threads.h"    // tools/
+#include "blas_setup.h"      // tools/
 #include "malloc_settings.h" // tools/
 
 int main(int argc, char** argv)
 {
+  cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
   cut_benchmark::Options opt;
   if(const int r = cut_benchmark::parse_options(argc, argv, opt)) return r == 1 ? 0 : r;
   cut_tools::use_one_blas_thread();

@@ -4,7 +4,7 @@
 // coordinates and, on request, a JSON file of statistics and pictures
 // (tools/preview). By default the result is a texture atlas: charts free of
 // overlap, packed into the unit square with a padding in texels.
-#include "blas_threads.h"
+#include "blas_setup.h"
 #include "malloc_settings.h"
 #include "gltf_io.h"
 #include "mesh_input.h"
@@ -716,7 +716,8 @@ Run_summary unwrap_one(const char* argv0, const Options& options, const std::str
 
 int main(int argc, char** argv)
 {
-  cut_tools::use_one_blas_thread(); // see blas_threads.h
+  cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
+  cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();   // see malloc_settings.h
   Options options;
   try

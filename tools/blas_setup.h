@@ -1,0 +1,93 @@
+// The BLAS set-up of the programs of the project (uv_unwrap, the benchmark):
+// one BLAS thread, and OpenBLAS's vector kernels where it does not know the
+// processor.
+//
+// Threads.
+// From 8,000 unknowns the Newton systems are factored by CHOLMOD, whose
+// dense blocks go through BLAS (Debian: OpenBLAS). OpenBLAS's own threads
+// then compete with TBB's (assembly) and keep spinning between calls: on
+// bimba_i_f10000 refined to 160k faces (2 cores), a profile of the final solve
+// showed 48% of the time in the kernel and sched_yield, and the run took
+// 244 s with OpenBLAS's default threads against 164 s with one. A program
+// owns its process, so it may set this; the library does not.
+//
+// Kernels. Debian's OpenBLAS (0.3.21) picks its kernels by the processor's
+// model number at load time, and on a model it does not know (the Xeon of
+// the machines this project is measured on: family 6, model 207) it falls
+// back to its oldest x86-64 kernels, "Prescott" (SSE3), even where AVX2 and
+// FMA are there. OPENBLAS_CORETYPE, read when the library loads, chooses
+// them instead. Measured on that machine (2 cores, benchmark meshes from
+// 8,000 unknowns, where CHOLMOD and so BLAS factorize; one run each),
+// Prescott / Haswell / SkylakeX kernels: bimba_i_f10000 3.28 / 2.98 /
+// 2.89 s, armadillo_i_f10000 4.33 / 4.00 / 4.07, tooth 1.50 / 1.32 / 1.35,
+// circular_box_o_f20000 2.94 / 2.50 / 2.61, face_f10000 3.12 / 2.63 /
+// 2.69, max_planck_i_f8000 2.57 / 2.21 / 2.24, lion_o_f10000 5.73 / 5.30 /
+// 5.42; the same E_d, E_s and Newton iterations on all 21 meshes, the
+// smaller ones (Eigen's solvers, no BLAS) unchanged. Larger (the scaling
+// run, one run each), Haswell / SkylakeX: bimba_i_f10000 refined to 40k
+// faces 8.33 / 7.92 s, to 160k 23.8 / 22.4 s, refined_elephant 40.9 / 40.0
+// s. So the AVX-512 kernels where the processor has them (what OpenBLAS
+// itself picks on the models it knows), else the AVX2 ones.
+#ifndef CUT_PARAM_TOOLS_BLAS_SETUP_H
+#define CUT_PARAM_TOOLS_BLAS_SETUP_H
+
+#include <cstdlib>
+#include <cstring>
+#if defined(__GNUC__) && defined(__ELF__)
+#include <unistd.h>
+#endif
+
+#if defined(__GNUC__) && defined(__ELF__)
+// OpenBLAS's control, if the BLAS loaded is OpenBLAS (a weak reference: null otherwise)
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+extern "C" char* openblas_get_corename(void) __attribute__((weak));
+#endif
+
+namespace cut_tools {
+
+/// Asks the BLAS for one thread, if it is OpenBLAS and the environment does
+/// not say otherwise (OPENBLAS_NUM_THREADS, OMP_NUM_THREADS). Returns true if set.
+inline bool use_one_blas_thread()
+{
+#if defined(__GNUC__) && defined(__ELF__)
+  if(openblas_set_num_threads != nullptr && std::getenv("OPENBLAS_NUM_THREADS") == nullptr
+     && std::getenv("OMP_NUM_THREADS") == nullptr)
+  {
+    openblas_set_num_threads(1);
+    return true;
+  }
+#endif
+  return false;
+}
+
+/// Where OpenBLAS runs its generic "Prescott" kernels on an x86-64 processor
+/// with AVX-512 (F, BW, DQ, VL) or AVX2 and FMA (a model it does not know),
+/// starts the program again (the same arguments, /proc/self/exe) with
+/// OPENBLAS_CORETYPE=SkylakeX or Haswell, and does not return. Does nothing
+/// if OPENBLAS_CORETYPE is set (by the user, or by this call before the new
+/// start), if the BLAS is not OpenBLAS, or under valgrind (whose tools would
+/// not follow the new start); returns if the new start fails. Call it first
+/// in main(), before any output.
+inline void use_vector_blas_kernels(char** argv)
+{
+#if defined(__GNUC__) && defined(__ELF__) && (defined(__x86_64__) || defined(__i386__))
+  if(openblas_get_corename == nullptr || std::getenv("OPENBLAS_CORETYPE") != nullptr) return;
+  const char* core = openblas_get_corename();
+  if(core == nullptr || std::strcmp(core, "Prescott") != 0) return;
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw")
+                      && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if(!avx512 && !avx2) return;
+  const char* preload = std::getenv("LD_PRELOAD");
+  if(preload != nullptr && std::strstr(preload, "vgpreload") != nullptr) return;
+  if(setenv("OPENBLAS_CORETYPE", avx512 ? "SkylakeX" : "Haswell", 1) != 0) return;
+  execv("/proc/self/exe", argv);
+  unsetenv("OPENBLAS_CORETYPE"); // the new start failed: go on as we are
+#else
+  (void)argv;
+#endif
+}
+
+} // namespace cut_tools
+
+#endif
