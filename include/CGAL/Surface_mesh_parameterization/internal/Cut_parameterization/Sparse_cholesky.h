@@ -337,7 +337,12 @@ public:
   /// True where a solve costs a small fraction of a factorization (the
   /// simplicial solvers), so that an old factorization pays as a
   /// preconditioner; CHOLMOD's supernodal factorization is fast and its
-  /// solves are not (Projected_newton_solver::reuse_factor()).
+  /// solves are not (Projected_newton_solver::reuse_factor()). Measured
+  /// again with OpenBLAS's AVX-512 kernels (a CHOLMOD solve about 1/8 of a
+  /// factorization on bimba_i_f10000): with the reuse in CHOLMOD's range too,
+  /// more Newton iterations and longer seams (bimba_i_f10000 284 -> 365, E_s
+  /// 2.673 -> 3.007; max_planck_i_f8000 253 -> 292), time x1.03 over the 21
+  /// benchmark meshes.
   bool solves_are_cheap() const { return method_ != Method::CHOLMOD; }
 
   /// Numeric factorization of a matrix with the analyzed pattern.
