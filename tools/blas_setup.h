@@ -14,30 +14,18 @@
 // Kernels. Debian's OpenBLAS (0.3.21) picks its kernels by the processor's
 // model number at load time, and on a model it does not know (the Xeon of
 // the machines this project is measured on: family 6, model 207) it falls
-// back to its oldest x86-64 kernels, "Prescott" (SSE3), even where AVX2 and
-// FMA are there. OPENBLAS_CORETYPE, read when the library loads, chooses
-// them instead. Measured on that machine (2 cores, benchmark meshes from
-// 8,000 unknowns, where CHOLMOD and so BLAS factorize; one run each),
-// Prescott / Haswell / SkylakeX kernels: bimba_i_f10000 3.28 / 2.98 /
-// 2.89 s, armadillo_i_f10000 4.33 / 4.00 / 4.07, tooth 1.50 / 1.32 / 1.35,
-// circular_box_o_f20000 2.94 / 2.50 / 2.61, face_f10000 3.12 / 2.63 /
-// 2.69, max_planck_i_f8000 2.57 / 2.21 / 2.24, lion_o_f10000 5.73 / 5.30 /
-// 5.42; the same E_d, E_s and Newton iterations on all 21 meshes, the
-// smaller ones (Eigen's solvers, no BLAS) unchanged. Larger (the scaling
-// run, one run each), Haswell / SkylakeX: bimba_i_f10000 refined to 40k
-// faces 8.33 / 7.92 s, to 160k 23.8 / 22.4 s, refined_elephant 40.9 / 40.0
-// s. So the AVX-512 kernels where the processor has them (what OpenBLAS
-// itself picks on the models it knows), else the AVX2 ones.
+// back to its generic SSE3 kernels ("Prescott") even where AVX2, FMA and
+// AVX-512 are there. OPENBLAS_CORETYPE, read when the library loads, chooses
+// them instead: the same results, 7-16% faster on the benchmark meshes of
+// 8k-20k faces (the measures: the manual, "Linear solvers").
 #ifndef CUT_PARAM_TOOLS_BLAS_SETUP_H
 #define CUT_PARAM_TOOLS_BLAS_SETUP_H
 
 #include <cstdlib>
 #include <cstring>
-#if defined(__GNUC__) && defined(__ELF__)
-#include <unistd.h>
-#endif
 
 #if defined(__GNUC__) && defined(__ELF__)
+#include <unistd.h>
 // OpenBLAS's control, if the BLAS loaded is OpenBLAS (a weak reference: null otherwise)
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 extern "C" char* openblas_get_corename(void) __attribute__((weak));
