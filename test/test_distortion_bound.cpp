@@ -3,8 +3,10 @@
 // of the default run, a bound no run reaches (4 on a curved surface, also
 // after the greedy splits that follow the λ search) keeps the lowest E_d
 // found and says so, and bounds below 4 are refused. The search's trials
-// run two at a time: the result is the same for any number of threads, and
-// a progress callback sees one trial at a time and can cancel. The split
+// run two or three at a time, and the split trial that judges several
+// candidates per split judges them at once: the result is the same for any
+// number of threads, and a progress callback sees one trial at a time (the
+// split trials report each split judged) and can cancel. The split
 // trials (internal split_from_start()), from the search's prepared start,
 // reach a reachable bound by cutting, whichever split they keep. Every
 // result is a valid atlas (check_cut_result()).
@@ -17,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <limits>
+#include <string>
 #include <thread>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -110,9 +113,10 @@ TEST(Distortion_bound_threads, the_result_is_the_same_for_any_number_of_threads)
 TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_can_cancel)
 {
   const TypeParam mesh = make_mesh<TypeParam>(wide_cap());
-  std::atomic<int> inside{0}, overlaps{0}, calls{0};
-  auto watch = [&](const SMP::Cut_and_parameterize_progress&) {
+  std::atomic<int> inside{0}, overlaps{0}, calls{0}, splits{0};
+  auto watch = [&](const SMP::Cut_and_parameterize_progress& p) {
     if(inside.fetch_add(1) != 0) ++overlaps;
+    if(std::string(p.phase) == "split") ++splits;
     std::this_thread::sleep_for(std::chrono::microseconds(200)); // room for another trial to come in
     ++calls;
     inside.fetch_sub(1);
@@ -120,7 +124,8 @@ TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_ca
   };
   Cut_run<TypeParam> run(mesh);
   ASSERT_TRUE(run.run(SMP::parameters::progress_callback(watch, SMP::parameters::distortion_bound(4.2))).ok());
-  EXPECT_GT(calls.load(), 2 * 12); // several trials of 12 alternations each
+  EXPECT_GT(calls.load(), 2 * 12); // several trials: 12 alternations each, or a report per split judged
+  EXPECT_GT(splits.load(), 0);     // the split trials report (and can be canceled) too
   EXPECT_EQ(overlaps.load(), 0);
 
   int seen = 0;

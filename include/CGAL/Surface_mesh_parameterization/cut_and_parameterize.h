@@ -19,7 +19,7 @@ namespace Surface_mesh_parameterization {
 /// State reported to the `progress_callback` named parameter.
 struct Cut_and_parameterize_progress
 {
-  const char* phase = "";      ///< "initialize", "alternate", "cut", "final"
+  const char* phase = "";      ///< "initialize", "alternate", "cut", "split" (a greedy split judged), "final"
   int pass = 0;                ///< current pass, from 0
   int alternation = 0;         ///< alternations done in this pass
   int alternations_per_pass = 0; ///< alternations of one pass (the same in every pass)

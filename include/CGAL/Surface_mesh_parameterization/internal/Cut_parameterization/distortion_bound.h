@@ -1,21 +1,22 @@
 // A distortion bound: the shortest seams whose map has E_d <= bound. Two
 // kinds of trials, all from the same start (the initial cut and map, and the
 // first u-step where the alternation runs: they do not depend on λ):
-// - whole joint_optimization() runs with other seam costs λ (the knob that
-//   trades seam length for distortion): E_d falls as λ falls, so the search
-//   walks λ down (halving) until the bound holds, or up (doubling) while it
-//   holds, then narrows λ once between the largest passing and the smallest
-//   failing value above it (in log scale);
 // - two split trials without the alternation (split_from_start()): cuts
 //   added one at a time where the map is most distorted (greedy_splits.h,
-//   OptCuts' split step) until the bound holds.
+//   OptCuts' split step) until the bound holds;
+// - where neither reaches the bound, whole joint_optimization() runs with
+//   other seam costs λ (the knob that trades seam length for distortion):
+//   E_d falls as λ falls, so the search walks λ down (halving) until the
+//   bound holds, or up (doubling) while it holds, then narrows λ once
+//   between the largest passing and the smallest failing value above it (in
+//   log scale).
 // The trials go two at a time, run at once on two cores. The candidates are
-// the passing λ trial with the shortest seams (E_s is not monotone in λ: on
-// hand1 of the OptCuts set the largest passing λ cut more) and the passing
-// split trials; the seams of each are rerouted and zipped back within the
-// bound, and the shortest win. If no trial passes, the splits take over
-// from the least distorted λ trial and from the trial at the given λ; if
-// still none passes, the trial with the lowest E_d is returned.
+// the passing split trials, or else the passing λ trial with the shortest
+// seams (E_s is not monotone in λ: on hand1 of the OptCuts set the largest
+// passing λ cut more); the seams of each are rerouted and zipped back
+// within the bound, and the shortest win. If no trial passes, the splits
+// take over from the least distorted λ trial and from the trial at the
+// given λ; if still none passes, the trial with the lowest E_d is returned.
 #ifndef CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 
@@ -298,63 +299,94 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     return OK;
   };
 
-  // The walk: the given λ and half of it first (a bound is most often asked
-  // for less distortion than the default gives), then down by two halvings
-  // per round while nothing passed, or up by two doublings per round from a
-  // passing λ while nothing above it failed, within the search's limits.
-  const double lowest = settings.lambda * std::ldexp(1., -search.steps_down);
-  const double highest = settings.lambda * std::ldexp(1., search.steps_up);
-  auto failing_above = [&](double lambda) {
-    double above = 0.;
-    for(double f : failed)
-      if(f > lambda && (above == 0. || f < above)) above = f;
-    return above;
-  };
-  std::vector<double> lambdas{settings.lambda, 0.5 * settings.lambda};
-  while(!lambdas.empty())
-  {
-    if((status = run_round(lambdas, false)) != OK) return status;
-    lambdas.clear();
-    const double from = have_pass ? best_pass_lambda : lowest_tried;
-    const double factor = have_pass ? 2. : 0.5;
-    if(have_pass && failing_above(best_pass_lambda) > 0.) break;
-    for(double next = from * factor; lambdas.size() < 2 && next >= lowest * 0.999 && next <= highest * 1.001;
-        next *= factor)
-      lambdas.push_back(next);
-  }
-  // Between the largest passing λ and the smallest failing one above it:
-  // each round tries the two points that cut that interval in three (log
-  // scale), so two rounds narrow it 9 times (three bisections: 8 times).
-  for(int k = 0; k < search.refinements && have_pass; ++k)
-  {
-    const double above = failing_above(best_pass_lambda);
-    if(above == 0.) break;
-    const double ratio = std::cbrt(above / best_pass_lambda);
-    if((status = run_round({best_pass_lambda * ratio, best_pass_lambda * ratio * ratio}, false)) != OK) return status;
-  }
-
   // The split trials (split_from_start()), two at once: keeping the first
   // split accepted among the three most distorted vertices, and keeping the
-  // best of the six most distorted. Those within the bound join the best λ
-  // trial as candidates. Under OptCuts' 11 bounds (2 cores; both trials
-  // judging three vertices) the seams kept came from the first kind on 4
-  // meshes, from the second on 5, from a λ trial on 2 (tooth, cat); E_s /
-  // OptCuts' E_s went from a geometric mean of 1.27 to 0.99 (bimba_i_f10000
-  // 2.37 -> 1.72, bunnyhead 3.87 -> 2.43, hand1 5.91 -> 3.88), at 1.5-4x the
-  // time (venus 0.61 -> 1.04 s, armadillo_i_f10000 23 -> 46 s,
-  // circular_box_o_f20000 11.6 -> 44.6 s); best_split_candidates for six.
+  // best of the six most distorted. Under OptCuts' 11 bounds (2 cores; both
+  // trials judging three vertices, with the λ search too) the seams kept
+  // came from the first kind on 4 meshes, from the second on 5, from a λ
+  // trial on 2 (tooth, cat); E_s / OptCuts' E_s went from a geometric mean
+  // of 1.27 to 0.99 (bimba_i_f10000 2.37 -> 1.72, bunnyhead 3.87 -> 2.43,
+  // hand1 5.91 -> 3.88), at 1.5-4x the time (venus 0.61 -> 1.04 s,
+  // armadillo_i_f10000 23 -> 46 s, circular_box_o_f20000 11.6 -> 44.6 s);
+  // best_split_candidates for six.
+  //
+  // Those within the bound are the candidates, and the λ search runs only
+  // where neither is: once the seams are shortened (below), a split trial's
+  // were the shortest on all 11 of OptCuts' bounds (the λ trial's were
+  // 1-73% longer in 3D length: tooth 0.980 against 0.969, cat 0.173
+  // against 0.171, venus 7.79 against 5.04, bunnyhead 3.55 against 2.05).
+  // Without the λ search, the same E_d and E_s on all 11 in 0.44-0.82x the
+  // time (2 cores: venus 2.31 -> 1.16 s, bimba_i_f10000 44.0 -> 26.9 s,
+  // armadillo_i_f10000 67.0 -> 45.2 s); with the candidates of the second
+  // trial judged at once too (split_greedily()), 0.38-0.69x (0.95 s,
+  // 22.6 s, 38.9 s).
+  //
+  // The run at the given λ goes with them (a task each, all at once; read in
+  // order), so that a bound the default run meets never gets longer seams
+  // than it (where the bound is below the default's E_d, it is the λ
+  // search's first trial): under OptCuts' bounds the same seams, for up to
+  // 13% more time (venus 0.95 -> 1.02 s, duck1 2.10 -> 2.34 s).
   std::vector<Joint_state> candidates;
+  bool given_lambda_tried = false;
   if(settings.greedy_splits && settings.passes > 0 && surface.number_of_faces() <= split_trial_max_faces)
   {
-    if((status = run_trials(2, [&](std::size_t i, Joint_state& s) {
-          s = start;
-          return split_from_start(surface, face_lambda, trial_base, i == 1, s);
-        })) != OK)
-      return status;
-    for(Joint_state& s : trials)
+    std::vector<Joint_state> first(3);
+    std::vector<Error_code> statuses(3, OK);
+    auto task = [&](std::size_t i) {
+      if(i == 2) { statuses[i] = run(settings.lambda, false, first[i]); return; }
+      first[i] = start;
+      statuses[i] = split_from_start(surface, face_lambda, trial_base, i == 1, first[i]);
+    };
+    if(at_once) parallel_tasks(3, task);
+    else for(std::size_t i = 0; i < 3; ++i) task(i);
+    for(Error_code s : statuses)
+      if(s != OK) return s;
+    for(std::size_t i = 0; i < 2; ++i)
     {
-      add_work(s);
-      if(s.distortion <= bound) candidates.push_back(std::move(s));
+      add_work(first[i]);
+      if(first[i].distortion <= bound) candidates.push_back(std::move(first[i]));
+    }
+    record(settings.lambda, first[2]);
+    given_lambda_tried = true;
+  }
+
+  // The λ search only where no split trial reached the bound (see above).
+  if(candidates.empty())
+  {
+    // The walk: the given λ and half of it first (a bound is most often asked
+    // for less distortion than the default gives), then down by two halvings
+    // per round while nothing passed, or up by two doublings per round from a
+    // passing λ while nothing above it failed, within the search's limits.
+    const double lowest = settings.lambda * std::ldexp(1., -search.steps_down);
+    const double highest = settings.lambda * std::ldexp(1., search.steps_up);
+    auto failing_above = [&](double lambda) {
+      double above = 0.;
+      for(double f : failed)
+        if(f > lambda && (above == 0. || f < above)) above = f;
+      return above;
+    };
+    std::vector<double> lambdas{settings.lambda, 0.5 * settings.lambda};
+    if(given_lambda_tried) lambdas.erase(lambdas.begin()); // the same walk, its first trial done
+    while(!lambdas.empty())
+    {
+      if((status = run_round(lambdas, false)) != OK) return status;
+      lambdas.clear();
+      const double from = have_pass ? best_pass_lambda : lowest_tried;
+      const double factor = have_pass ? 2. : 0.5;
+      if(have_pass && failing_above(best_pass_lambda) > 0.) break;
+      for(double next = from * factor; lambdas.size() < 2 && next >= lowest * 0.999 && next <= highest * 1.001;
+          next *= factor)
+        lambdas.push_back(next);
+    }
+    // Between the largest passing λ and the smallest failing one above it:
+    // each round tries the two points that cut that interval in three (log
+    // scale), so two rounds narrow it 9 times (three bisections: 8 times).
+    for(int k = 0; k < search.refinements && have_pass; ++k)
+    {
+      const double above = failing_above(best_pass_lambda);
+      if(above == 0.) break;
+      const double ratio = std::cbrt(above / best_pass_lambda);
+      if((status = run_round({best_pass_lambda * ratio, best_pass_lambda * ratio * ratio}, false)) != OK) return status;
     }
   }
 
@@ -370,6 +402,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     if(settings.lambda != least_distorted) split_lambdas.push_back(settings.lambda);
     if((status = run_round(split_lambdas, true)) != OK) return status;
   }
+  // the λ candidate (first, if any) next to split trials' is shortened only
+  // where it can win (below)
+  const bool lambda_beside_splits = have_pass && !candidates.empty();
   if(have_pass) candidates.insert(candidates.begin(), std::move(best_pass));
   bound_met = !candidates.empty();
   if(!bound_met)
@@ -401,11 +436,26 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     };
     for(Joint_state& c : candidates) c.newton_iterations = c.factorizations = 0;
     std::vector<Error_code> statuses(candidates.size(), OK);
-    in_pairs(candidates.size(), [&](std::size_t i) {
+    auto shorten = [&](std::size_t i) {
       if((statuses[i] = straighten_under_bound(surface, unboxed, user_cut, candidates[i])) == OK
          && (statuses[i] = merge_under_bound(surface, unboxed, user_cut, candidates[i])) == OK)
         statuses[i] = straighten_under_bound(surface, unboxed, user_cut, candidates[i]);
-    }, at_once);
+    };
+    const std::size_t first = lambda_beside_splits ? 1 : 0;
+    in_pairs(candidates.size() - first, [&](std::size_t i) { shorten(first + i); }, at_once);
+    if(lambda_beside_splits)
+    {
+      // The seam steps shorten a λ trial's seams by a third at most (by
+      // 1-34% under OptCuts' bounds): one 1.5 times as long as the shortest
+      // split trial's, shortened, cannot win, and is left as it is. Under
+      // OptCuts' bounds the run at the given λ passes on hand1, bunnyhead
+      // and armadillo_i_f10000 and is left so (shortened, its seams were
+      // 1.2-1.7x the winner's; shortening them cost up to 23% more time).
+      double split_shortest = std::numeric_limits<double>::infinity();
+      for(std::size_t i = 1; i < candidates.size(); ++i)
+        if(statuses[i] == OK) split_shortest = (std::min)(split_shortest, seam_length_3d(surface, candidates[i].is_cut));
+      if(seam_length_3d(surface, candidates[0].is_cut) < 1.5 * split_shortest) shorten(0);
+    }
     std::size_t chosen = 0;
     double shortest = std::numeric_limits<double>::infinity();
     for(std::size_t i = 0; i < candidates.size(); ++i)

@@ -435,7 +435,13 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
   const bool bounded = settings.distortion_bound > 0.;
   if(!settings.greedy_splits || settings.passes == 0 || (!bounded && state.distortion <= low_poly_distortion))
     return OK;
-  auto relax = [&](Joint_state& s) { return relax_map(settings.split.newton_iterations, settings.constrained_tolerance, s); };
+  // each trial (a split judged) is reported, and can be canceled
+  auto relax = [&](Joint_state& s) {
+    if(settings.progress && !settings.progress({"split", settings.passes, 0, settings.alternations_per_pass(),
+                                                settings.epsilon_end, s.distortion}))
+      return ERROR_CANCELED;
+    return relax_map(settings.split.newton_iterations, settings.constrained_tolerance, s);
+  };
   auto accept = [&](double before, double after, double added) {
     return bounded ? after < before : before - after >= low_poly_split_gain * added;
   };

@@ -9,6 +9,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/parallel_invoke.h>
 #endif
 
@@ -25,6 +26,22 @@ void parallel_for(std::size_t n, const Function& function)
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for(std::size_t i = range.begin(); i != range.end(); ++i) function(i);
                     });
+#else
+  for(std::size_t i = 0; i < n; ++i) function(i);
+#endif
+}
+
+/// Calls f(i) for every i < n, each as a task of its own where TBB is
+/// linked (for a few heavy, independent calls), serially otherwise; f(i)
+/// must write only what belongs to i.
+template <typename Function>
+void parallel_tasks(std::size_t n, const Function& function)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for(std::size_t i = range.begin(); i != range.end(); ++i) function(i);
+                    }, tbb::simple_partitioner());
 #else
   for(std::size_t i = 0; i < n; ++i) function(i);
 #endif
