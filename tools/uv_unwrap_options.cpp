@@ -174,10 +174,10 @@ bool parse_arguments(int argc, char** argv, Options& options)
   app.add_option("--passes", options.passes, "optimize-and-cut passes (default 1)")
     ->type_name("N")->transform(count())->group(method);
   app.add_option("--max-distortion", options.max_distortion,
-                 "E_d at most B (>= 4), with the shortest seams found by runs\n"
-                 "with other seam costs and by cuts added one at a time where\n"
-                 "the map is most distorted (at most 11 runs, two at a time on\n"
-                 "two cores; distortion_bound)")
+                 "E_d at most B (>= 4), with the shortest seams found by cuts\n"
+                 "added one at a time where the map is most distorted, or else\n"
+                 "by runs with other seam costs (at most 11 runs, two or three\n"
+                 "at a time on two cores; distortion_bound)")
     ->type_name("B")->transform(number("a number >= 4", [](double x) { return x >= 4.; }))
     ->group(method);
 

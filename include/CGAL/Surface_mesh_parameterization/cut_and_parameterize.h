@@ -305,25 +305,29 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///     for the default box; no limit (the box is kept as asked) once
 ///     `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given
 ///   - `distortion_bound`: double ≥ 4, the result's E_d must be at most this,
-///     with seams as short as the search finds. Two kinds of trials: whole
-///     runs with the seam cost λ halved (at most 6 times) until E_d is within
-///     the bound, or doubled (at most 3 times) while it is, then one round
-///     that cuts the interval between passing and failing λ in three; and,
-///     on meshes of at most 25,000 faces, two split trials that add cuts
+///     with seams as short as the search finds. Two kinds of trials: on
+///     meshes of at most 25,000 faces, two split trials that add cuts
 ///     greedily (see below) from the initial cut until E_d is within the
-///     bound. The candidates are the passing λ run with the shortest seams
-///     and the passing split trials; the seams of each are rerouted along
-///     shorter paths (the ends of seams from the mesh border may slide along
-///     it), zipped back from their tips and rerouted again where the bound
-///     allows, and the shortest win; the bounding box comes last, within what the
-///     bound leaves. If no trial reaches the bound, cuts are added greedily
-///     to the least distorted run and to the run at the given λ; if neither
+///     bound, beside the run at the given λ; and, only where no split trial
+///     reaches the bound (or none ran), whole runs with the seam cost λ
+///     halved (at most 6 times) until E_d is within the bound, or doubled
+///     (at most 3 times) while it is, then one round that cuts the interval
+///     between passing and failing λ in three. The candidates are the
+///     passing split trials and the passing λ run with the shortest seams
+///     (next to split trials, only if its seams are less than 1.5 times
+///     theirs); the seams of each are rerouted along shorter paths (the
+///     ends of seams from the mesh border may slide along it), zipped back
+///     from their tips and rerouted again where the bound allows, and the
+///     shortest win; the bounding box comes last, within what the bound
+///     leaves. If no trial reaches the bound, cuts are added greedily to the
+///     least distorted run and to the run at the given λ; if neither
 ///     reaches it, the result with the lowest E_d is returned and
 ///     `distortion_bound_met` is false. At most 11 runs (the initial map and
-///     first u-step, which do not depend on λ, done once), two at a time, at
-///     once where TBB is linked and the mesh has at most 250,000 faces (the
-///     result does not depend on the number of threads; a progress callback
-///     is called by one run at a time). Default: no bound
+///     first u-step, which do not depend on λ, done once), two or three at
+///     a time, at once where TBB is linked and the mesh has at most 250,000
+///     faces (the result does not depend on the number of threads; a
+///     progress callback is called by one run at a time, and the split
+///     trials report each split judged, phase "split"). Default: no bound
 ///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this
 ///     many faces, the alternation decides the cuts on a copy simplified to
 ///     about this many faces (CGAL's Surface_mesh_simplification, keeping the
