@@ -330,23 +330,22 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   bool given_lambda_tried = false;
   if(settings.greedy_splits && settings.passes > 0 && surface.number_of_faces() <= split_trial_max_faces)
   {
-    std::vector<Joint_state> first(3);
+    // (at most split_trial_max_faces faces: three states at once fit)
+    std::vector<Joint_state> opening(3);
     std::vector<Error_code> statuses(3, OK);
-    auto task = [&](std::size_t i) {
-      if(i == 2) { statuses[i] = run(settings.lambda, false, first[i]); return; }
-      first[i] = start;
-      statuses[i] = split_from_start(surface, face_lambda, trial_base, i == 1, first[i]);
-    };
-    if(at_once) parallel_tasks(3, task);
-    else for(std::size_t i = 0; i < 3; ++i) task(i);
+    parallel_tasks(3, [&](std::size_t i) {
+      if(i == 2) { statuses[i] = run(settings.lambda, false, opening[i]); return; }
+      opening[i] = start;
+      statuses[i] = split_from_start(surface, face_lambda, trial_base, i == 1, opening[i]);
+    });
     for(Error_code s : statuses)
       if(s != OK) return s;
     for(std::size_t i = 0; i < 2; ++i)
     {
-      add_work(first[i]);
-      if(first[i].distortion <= bound) candidates.push_back(std::move(first[i]));
+      add_work(opening[i]);
+      if(opening[i].distortion <= bound) candidates.push_back(std::move(opening[i]));
     }
-    record(settings.lambda, first[2]);
+    record(settings.lambda, opening[2]);
     given_lambda_tried = true;
   }
 

@@ -38,10 +38,7 @@ template <typename Function>
 void parallel_tasks(std::size_t n, const Function& function)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for(std::size_t i = range.begin(); i != range.end(); ++i) function(i);
-                    }, tbb::simple_partitioner());
+  tbb::parallel_for(std::size_t(0), n, function, tbb::simple_partitioner());
 #else
   for(std::size_t i = 0; i < n; ++i) function(i);
 #endif
