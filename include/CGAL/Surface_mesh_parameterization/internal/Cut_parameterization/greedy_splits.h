@@ -51,12 +51,13 @@ struct Split_settings
 /// vertex judged at an earlier split is judged again only if its E_d
 /// decrease then, over the length of its path to the boundary now, times
 /// this, could beat the best gain found at this split: a split elsewhere
-/// rarely makes a split worth more, except by shortening its path (counted).
-/// Under OptCuts' 11 bounds (2 cores), planck1: 198 -> 151 candidates
-/// judged; the same seams on 10 of the 11, duck1's shorter (E_s 1.0653 ->
-/// 1.0647); geometric mean of OptCuts' time over ours 1.33x -> 1.41x (planck1
-/// 4.85 -> 4.16 s, armadillo_i_f10000 38.8 -> 36.2 s, bimba_i_f10000 22.5 ->
-/// 19.9 s). With 1 instead of 1.25, 141 judged on planck1.
+/// rarely makes a split worth more, except by shortening its path (which
+/// the bound takes into account). Under OptCuts' 11 bounds (2 cores),
+/// planck1: 198 -> 151 candidates judged; the same seams on 10 of the 11,
+/// duck1's shorter (E_s 1.0653 -> 1.0647); geometric mean of OptCuts' time
+/// over ours 1.33x -> 1.48x (median of 3 runs; planck1 4.85 -> 4.22 s,
+/// armadillo_i_f10000 38.8 -> 34.1 s, bimba_i_f10000 22.5 -> 19.4 s). With
+/// 1 instead of 1.25, 141 judged on planck1.
 constexpr double lazy_judging_margin = 1.25;
 
 /// Per surface vertex: Σ A_f (e_f − 4) / 3 over its faces, e_f the E_d
