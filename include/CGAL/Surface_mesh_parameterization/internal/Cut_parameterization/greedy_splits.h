@@ -159,12 +159,14 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     });
     Joint_state best;
     double best_gain = -1.; // E_d decrease per unit of E_s added of `best`
+    // each candidate's path to the boundary, found once
+    std::vector<Cut_path> paths(tried);
+    for(std::size_t i = 0; i < tried; ++i) paths[i].edges = boundary.path_edges(order[i]);
     // the trial of candidate i: `state` cut along its path, solved
     auto judge = [&](std::size_t i, Joint_state& trial) {
-      Cut_path path{boundary.path_edges(order[i]), 0.};
       trial = state;
       trial.newton_iterations = trial.factorizations = 0; // its own work
-      apply_cuts(surface, {path}, trial);
+      apply_cuts(surface, {paths[i]}, trial);
       return solve(trial);
     };
     std::size_t best_index = tried; // the candidate of `best` (the first of equal gains wins)
@@ -203,7 +205,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
       for(std::size_t i = 0; i < tried; ++i)
       {
         double length = 0.;
-        for(int e : boundary.path_edges(order[i])) length += edge_length[e];
+        for(int e : paths[i].edges) length += edge_length[e];
         const double last = last_decrease[order[i]];
         bound[i] = std::isnan(last) || !(length > 0.)
                      ? std::numeric_limits<double>::infinity()
