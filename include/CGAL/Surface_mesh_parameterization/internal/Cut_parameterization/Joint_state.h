@@ -53,6 +53,7 @@ struct Joint_state
   Eigen::VectorXd v;             // per face
   std::size_t newton_iterations = 0;
   std::size_t factorizations = 0;   // numeric Cholesky factorizations of the Newton solves
+  std::size_t solves = 0;           // solves with those factorizations
   std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
   double distortion = 0.;           // E_d of the final map, before packing scales it

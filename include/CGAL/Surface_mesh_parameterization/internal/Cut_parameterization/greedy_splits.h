@@ -165,7 +165,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     // the trial of candidate i: `state` cut along its path, solved
     auto judge = [&](std::size_t i, Joint_state& trial) {
       trial = state;
-      trial.newton_iterations = trial.factorizations = 0; // its own work
+      trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
       apply_cuts(surface, {paths[i]}, trial);
       return solve(trial);
     };
@@ -174,6 +174,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     auto weigh = [&](Joint_state& trial, std::size_t index) {
       state.newton_iterations += trial.newton_iterations;
       state.factorizations += trial.factorizations;
+      state.solves += trial.solves;
       const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
       // (a path whose cut could not keep the charts disks is not cut: added 0)
       if(added > 0. && accept(state.distortion, trial.distortion, added))
@@ -246,6 +247,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     {
       best.newton_iterations = state.newton_iterations;
       best.factorizations = state.factorizations;
+      best.solves = state.solves;
       state = std::move(best);
     }
     if(!split_kept) break;
