@@ -43,6 +43,7 @@ struct Run_result
   double time = NaN;           // median wall time of the algorithm (s)
   std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
   std::size_t factorizations = 0, solves = 0; // of the inner solver (every phase)
+  std::size_t u_factorizations = 0, u_solves = 0, v_factorizations = 0; // of the alternation's u- and v-steps
   double distortion = NaN, seam_length = NaN, coverage = NaN;
   bool bound_met = true;       // distortion_bound_met (true without a bound)
   std::string note;
@@ -148,6 +149,9 @@ void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& o
   out.newton = first.newton_iterations;
   out.factorizations = first.number_of_factorizations;
   out.solves = first.number_of_solves;
+  out.u_factorizations = first.alternation_factorizations;
+  out.u_solves = first.alternation_solves;
+  out.v_factorizations = first.v_step_factorizations;
   out.charts = first.number_of_charts;
   out.distortion = first.distortion;
   out.seam_length = first.seam_length;

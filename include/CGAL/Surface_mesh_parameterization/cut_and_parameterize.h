@@ -62,6 +62,13 @@ struct Cut_and_parameterize_result
   /// minimizations: one per Newton iteration, more where the inner solver
   /// reuses a factorization (`inner_solver`)
   std::size_t number_of_solves = 0;
+  /// the part of `newton_iterations`, `number_of_factorizations` and
+  /// `number_of_solves` spent in the alternation's u-steps (the rest: the
+  /// final solves, the trials of splits and zips)
+  std::size_t alternation_newton_iterations = 0, alternation_factorizations = 0, alternation_solves = 0;
+  /// factorizations of the v-steps' systems, one per v-step (their symbolic
+  /// analysis is done once per pass; not counted above)
+  std::size_t v_step_factorizations = 0;
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
@@ -228,6 +235,10 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
   result.newton_iterations = state.newton_iterations;
   result.number_of_factorizations = state.factorizations;
   result.number_of_solves = state.solves;
+  result.alternation_newton_iterations = state.u_step_work.iterations;
+  result.alternation_factorizations = state.u_step_work.factorizations;
+  result.alternation_solves = state.u_step_work.solves;
+  result.v_step_factorizations = state.v_step_factorizations;
   result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
   result.distortion = state.distortion;

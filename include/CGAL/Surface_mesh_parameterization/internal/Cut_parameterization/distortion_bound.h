@@ -212,6 +212,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   if(status != OK) return status;
   const Joint_state start = std::move(prepared);
   std::size_t newton = start.newton_iterations, factorizations = start.factorizations, solves = start.solves;
+  Solver_counts u_step_work = start.u_step_work;
+  std::size_t v_step_factorizations = start.v_step_factorizations;
   Joint_timings timings = start.timings; // what came before (indexing, the prepared start)
   // A trial runs as without bound, or with the splits that go on until the
   // bound holds (`split_to_bound`). Without bound, the low-poly splits only
@@ -256,6 +258,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     newton += s.newton_iterations - start.newton_iterations;
     factorizations += s.factorizations - start.factorizations;
     solves += s.solves - start.solves;
+    u_step_work += s.u_step_work - start.u_step_work;
+    v_step_factorizations += s.v_step_factorizations - start.v_step_factorizations;
     timings.add_since(s.timings, start.timings);
   };
   auto record = [&](double lambda, Joint_state& s) {
@@ -415,6 +419,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     state.newton_iterations = newton;
     state.factorizations = factorizations;
     state.solves = solves;
+    state.u_step_work = u_step_work;
+    state.v_step_factorizations = v_step_factorizations;
     state.timings = timings;
     return finish_atlas(settings, state);
   }
@@ -484,6 +490,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   state.newton_iterations = newton;
   state.factorizations = factorizations;
   state.solves = solves;
+  state.u_step_work = u_step_work;
+  state.v_step_factorizations = v_step_factorizations;
   state.timings = timings;
   return finish_atlas(settings, state);
 }

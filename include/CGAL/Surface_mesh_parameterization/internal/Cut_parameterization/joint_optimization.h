@@ -144,6 +144,8 @@ inline Error_code u_step(const Joint_settings& settings, int alternation, Distor
   state.newton_iterations += report.iterations;
   state.factorizations += report.factorizations;
   state.solves += report.solves;
+  state.u_step_work += Solver_counts{std::size_t(report.iterations), std::size_t(report.factorizations),
+                                     std::size_t(report.solves)};
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
@@ -179,6 +181,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
       Scoped_timer v_step(state.timings.v_steps);
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      ++state.v_step_factorizations;
       v_step.stop();
       ++alternation;
       if(settings.progress && !settings.progress({"alternate", pass, alternation, settings.alternations_per_pass(),
@@ -581,6 +584,8 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   state.newton_iterations += coarse_state.newton_iterations;
   state.factorizations += coarse_state.factorizations;
   state.solves += coarse_state.solves;
+  state.u_step_work += coarse_state.u_step_work;
+  state.v_step_factorizations += coarse_state.v_step_factorizations;
   state.initial_distortion = coarse_state.initial_distortion;
   state.timings.add(coarse_state.timings); // no final solve or packing on the copy
   if(status != OK) return true;
