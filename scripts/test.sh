@@ -7,7 +7,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
-bash scripts/install_dependencies.sh
+bash scripts/install_dependencies.sh --with-blender
 
 # CGAL's CMake files default BUILD_TESTING to OFF: turn it on explicitly.
 # Configuring with tests also extracts CGAL's data set into build/data.
