@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything with the tests (Release, in
-# build/, shared with setup.sh) and runs them all.
+# Installs what is missing (with Debian's blender, for the add-on's test),
+# builds everything with the tests (Release, in build/, shared with setup.sh)
+# and runs them all.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
