@@ -202,6 +202,32 @@ def main():
     else:
         print("skip  CGAL's data set not found (%s)" % path)
 
+    # the uv_unwrap program, for a Blender whose Python cannot load the module: the same result
+    if os.environ.get("UV_UNWRAP"):
+        obj, marked, sharp = uv_sphere()
+        by_module = Job([obj], {"seam_cost": 1.5, "box": False}, protect="sharp_edge")
+        by_module.run()
+        os.environ["UV_UNWRAP_SEAMS_BACKEND"] = "uv_unwrap"
+        try:
+            by_program = Job([obj], {"seam_cost": 1.5, "box": False}, protect="sharp_edge")
+            check(by_program.backend.startswith("program"), "the program is used when forced (%s)" % by_program.backend)
+            by_program.run()
+            a, b = by_module.results[0], by_program.results[0]
+            check(np.array_equal(a.seams, b.seams) and np.array_equal(a.uv[a.faces_uv], b.uv[b.faces_uv])
+                  and a.stats["distortion"] == b.stats["distortion"],
+                  "the program gives the module's result (seams, UVs of every corner, E_d)")
+            result = bpy.ops.uv.unwrap_optimized_seams()
+            check(result == {'FINISHED'}, "the operator finishes on the program")
+            check_result(obj, "sphere, uv_unwrap program", marked, sharp)
+            canceled = Job([obj], {})
+            canceled.cancel()
+            canceled.run()
+            check(canceled.cancelled and not canceled.succeeded(), "the program is stopped by a cancel")
+        finally:
+            del os.environ["UV_UNWRAP_SEAMS_BACKEND"]
+    else:
+        print("skip  UV_UNWRAP is not set: the program fallback is not tested")
+
     # cancel: a run stopped at its first progress report writes nothing
     obj, marked, sharp = uv_sphere()
     before = snapshot(obj.data)

@@ -11,7 +11,8 @@ from .mesh_arrays import MeshArrays
 
 
 class Job:
-    def __init__(self, objects, options, keep_seams=True, protect="sharp_edge", uv_map_name=None):
+    def __init__(self, objects, options, keep_seams=True, protect="sharp_edge", uv_map_name=None, program=""):
+        self.unwrap, self.backend = backend.unwrap_function(program)  # raises RuntimeError if there is none
         self.objects = list(objects)
         self.options = dict(options)
         self.uv_map_name = uv_map_name
@@ -32,15 +33,12 @@ class Job:
 
     def run(self):
         """Unwraps every object (blocking)."""
-        uv_unwrap = backend.module()
         start = time.perf_counter()
         try:
-            if uv_unwrap is None:
-                raise RuntimeError(backend.problem())
             for i, a in enumerate(self.arrays):
                 self.current = i
-                self.results[i] = uv_unwrap.unwrap(a.V, a.F, seams=a.seams, forbidden=a.forbidden,
-                                                   progress=self._progress, **self.options)
+                self.results[i] = self.unwrap(a.V, a.F, seams=a.seams, forbidden=a.forbidden,
+                                              progress=self._progress, **self.options)
         except Exception as e:  # reported on the main thread
             cancelled = getattr(e, "name", "") == "ERROR_CANCELED"
             self.cancelled = cancelled

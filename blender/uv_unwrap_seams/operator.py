@@ -65,8 +65,10 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
 
     def _job(self, context):
         protect = {'sharp_edge': "sharp_edge", 'ATTRIBUTE': self.protect_attribute, 'NONE': None}[self.protect]
+        preferences = context.preferences.addons[__package__].preferences
         return Job(_mesh_objects(context), self._options(), keep_seams=self.keep_seams, protect=protect,
-                   uv_map_name=self.uv_map_name if self.new_uv_map else None)
+                   uv_map_name=self.uv_map_name if self.new_uv_map else None,
+                   program=bpy.path.abspath(preferences.uv_unwrap_program))
 
     def draw(self, context):
         layout = self.layout
@@ -127,7 +129,12 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
             self.report({'ERROR'}, "No selected mesh object with faces")
             return {'CANCELLED'}
         self._leave_edit_mode(context)
-        job = self._job(context)
+        try:
+            job = self._job(context)
+        except RuntimeError as e:
+            self._restore_mode()
+            self.report({'ERROR'}, str(e))
+            return {'CANCELLED'}
         job.run()
         return self._finish(context, job)
 
@@ -137,7 +144,12 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
             self.report({'ERROR'}, "No selected mesh object with faces")
             return {'CANCELLED'}
         self._leave_edit_mode(context)
-        self._job_running = self._job(context)
+        try:
+            self._job_running = self._job(context)
+        except RuntimeError as e:
+            self._restore_mode()
+            self.report({'ERROR'}, str(e))
+            return {'CANCELLED'}
         self._job_running.start()
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.1, window=context.window)
