@@ -119,20 +119,26 @@ def check_result(obj, label, marked=(), protected=(), library_seams=None):
 
 
 def uv_sphere():
+    """A UV sphere whose constraints matter: the edges that an unconstrained
+    run cuts are marked sharp (never to cut), and part of another meridian,
+    which it leaves, is marked as seams (to keep)."""
+    from uv_unwrap_seams.job import Job
     empty_scene()
     bpy.ops.mesh.primitive_uv_sphere_add(segments=32, ring_count=16, radius=1.0)
     obj = bpy.context.active_object
     mesh = obj.data
+    free = Job([obj], {}, keep_seams=False, protect=None)
+    free.run()
+    sharp = sorted(set(free.arrays[0].edge_indices(free.results[0].seams).tolist()))
     co = np.array([v.co[:] for v in mesh.vertices])
-    marked, sharp = [], []
+    marked = []
     for e in mesh.edges:
         a, b = co[e.vertices[0]], co[e.vertices[1]]
-        if abs(a[0]) < 1e-6 and abs(b[0]) < 1e-6 and a[1] > 0 and b[1] > 0 and a[2] > 0.3 and b[2] > 0.3:
-            e.use_seam = True  # part of a meridian on the northern side
+        if e.index in sharp:
+            e.use_edge_sharp = True
+        elif abs(a[0]) < 1e-6 and abs(b[0]) < 1e-6 and a[1] < 0 and b[1] < 0 and a[2] > 0.3 and b[2] > 0.3:
+            e.use_seam = True  # part of a meridian of the northern side that the free run does not cut
             marked.append(e.index)
-        if abs(a[2]) < 0.25 and abs(b[2]) < 0.25 and abs(a[2] - b[2]) < 1e-6:
-            e.use_edge_sharp = True  # the rings next to the equator
-            sharp.append(e.index)
     return obj, marked, sharp
 
 
@@ -167,7 +173,8 @@ def main():
 
     # a generated mesh, object mode, through the operator as a script calls it
     obj, marked, sharp = uv_sphere()
-    check(len(marked) > 0 and len(sharp) > 0, "the sphere has marked seams and sharp edges")
+    check(len(marked) > 0 and len(sharp) > 0, "the sphere has %d marked seams (that an unconstrained run does "
+          "not cut) and %d sharp edges (all those it cuts)" % (len(marked), len(sharp)))
     job = Job([obj], {}, keep_seams=True, protect="sharp_edge")
     job.run()
     library = set(job.arrays[0].edge_indices(job.results[0].seams).tolist())
@@ -187,6 +194,22 @@ def main():
     check("Optimized" in obj.data.uv_layers and obj.data.uv_layers.active.name == "Optimized",
           "edit mode: the new UV map is written and active")
     check_result(obj, "sphere, edit mode", marked, sharp)
+
+    # two selected objects at once; edges protected by a boolean edge attribute instead of sharpness
+    obj, marked, sharp = uv_sphere()
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=24, ring_count=12, location=(3, 0, 0))
+    other = bpy.context.active_object
+    keep = obj.data.attributes.new("uv_keep", 'BOOLEAN', 'EDGE')
+    flags = np.zeros(len(obj.data.edges), dtype=bool)
+    flags[sharp] = True
+    keep.data.foreach_set("value", flags)
+    for e in obj.data.edges:
+        e.use_edge_sharp = False
+    obj.select_set(True)
+    result = bpy.ops.uv.unwrap_optimized_seams(protect='ATTRIBUTE', protect_attribute="uv_keep")
+    check(result == {'FINISHED'}, "two objects: the operator finishes")
+    check_result(obj, "first of two, attribute", marked, sharp)
+    check_result(other, "second of two")
 
     # a mesh of CGAL's data set
     data = os.environ.get("CGAL_DATA_DIR", "")
