@@ -31,6 +31,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -392,6 +393,14 @@ Result unwrap(const py::object& V_object, const py::object& F_object, double sea
     }
   const seam_constraints::Edge_pairs seam_pairs = edge_pairs(seams_object, "seams", n);
   const seam_constraints::Edge_pairs forbidden_pairs = edge_pairs(forbidden_object, "forbidden", n);
+  {
+    std::set<std::pair<std::size_t, std::size_t>> cut;
+    for(const auto& [a, b] : seam_pairs) cut.emplace(std::min(a, b), std::max(a, b));
+    for(const auto& [a, b] : forbidden_pairs)
+      if(cut.count({std::min(a, b), std::max(a, b)}))
+        throw py::value_error("the edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                              ") is both in seams (to cut) and in forbidden (never to cut)");
+  }
   std::vector<double> weights;
   if(!face_weights_object.is_none())
   {
