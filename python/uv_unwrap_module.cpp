@@ -1,4 +1,5 @@
-// The Python module uv_unwrap: cut_and_parameterize() on numpy arrays.
+// The Python module uv_unwrap: cut_and_parameterize() on numpy arrays
+// (the arguments: unwrap_arguments.h; the result: unwrap_result.h).
 //
 //   import uv_unwrap
 //   r = uv_unwrap.unwrap(V, F)        # V (n,3) floats, F (m,3) vertex indices
@@ -15,6 +16,8 @@
 #include "blas_setup.h"
 #include "mesh_input.h"
 #include "seam_constraints.h"
+#include "unwrap_arguments.h"
+#include "unwrap_result.h"
 #include "unwrap_run.h"
 
 #include <pybind11/numpy.h>
@@ -26,14 +29,10 @@
 #endif
 
 #include <algorithm>
-#include <array>
-#include <limits>
 #include <cmath>
-#include <map>
 #include <optional>
 #include <set>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -45,14 +44,7 @@ extern "C" int openblas_get_num_threads(void) __attribute__((weak));
 
 namespace {
 
-namespace SMP = CGAL::Surface_mesh_parameterization;
-using Mesh = mesh_input::Mesh;
-using Point_3 = mesh_input::Point_3;
-using Point_2 = mesh_input::Kernel::Point_2;
-using face_descriptor = Mesh::Face_index;
-using halfedge_descriptor = Mesh::Halfedge_index;
-using edge_descriptor = Mesh::Edge_index;
-using vertex_descriptor = Mesh::Vertex_index;
+using namespace uv_unwrap_python;
 
 // A failure of the method or of the input's repair, raised as
 // uv_unwrap.UnwrapError (uv_unwrap.Cancelled for ERROR_CANCELED) with the
@@ -64,273 +56,6 @@ struct Unwrap_failure
 
 PyObject* unwrap_error_type = nullptr;
 PyObject* cancelled_type = nullptr;
-
-// ---------------------------------------------------------------- input arrays
-
-std::string shape_of(const py::array& a)
-{
-  std::string s = "(";
-  for(py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
-  return s + (a.ndim() == 1 ? ",)" : ")");
-}
-
-std::string dtype_of(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
-
-// `object` as an array of `columns` columns (0: one dimension) whose dtype
-// kind is one of `kinds` ("f", "iu"...); TypeError or ValueError otherwise.
-py::array checked_array(const py::object& object, const char* name, py::ssize_t columns, const std::string& kinds,
-                        const char* what)
-{
-  py::array a = py::array::ensure(object);
-  if(!a) throw py::type_error(std::string(name) + " must be a numpy array (or a sequence that converts to one)");
-  if(kinds.find(a.dtype().kind()) == std::string::npos)
-    throw py::type_error(std::string(name) + " must hold " + what + ", not " + dtype_of(a));
-  const bool ok = columns > 0 ? (a.ndim() == 2 && a.shape(1) == columns) : a.ndim() == 1;
-  if(!ok)
-    throw py::value_error(std::string(name) + " must have shape " +
-                          (columns > 0 ? "(n, " + std::to_string(columns) + ")" : std::string("(n,)")) + ", not " +
-                          shape_of(a));
-  return a;
-}
-
-py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::array& a)
-{
-  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-}
-
-py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> as_indices(const py::array& a)
-{
-  return py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-}
-
-// Vertex pairs (s,2) of the input's numbering, each checked against n.
-seam_constraints::Edge_pairs edge_pairs(const py::object& object, const char* name, std::size_t n)
-{
-  seam_constraints::Edge_pairs pairs;
-  if(object.is_none()) return pairs;
-  const auto a = as_indices(checked_array(object, name, 2, "iu", "integer vertex indices"));
-  const auto r = a.unchecked<2>();
-  for(py::ssize_t i = 0; i < r.shape(0); ++i)
-  {
-    for(int k = 0; k < 2; ++k)
-      if(r(i, k) < 0 || std::size_t(r(i, k)) >= n)
-        throw py::index_error(std::string(name) + "[" + std::to_string(i) + ", " + std::to_string(k) + "] = " +
-                              std::to_string(r(i, k)) + " is not a vertex index (V has " + std::to_string(n) +
-                              " rows)");
-    pairs.emplace_back(std::size_t(r(i, 0)), std::size_t(r(i, 1)));
-  }
-  return pairs;
-}
-
-// ---------------------------------------------------------------- options
-
-uv_unwrap::Options options_of(double seam_cost, const py::object& max_distortion, const py::object& hide_seams,
-                              int texture_size, double padding, const py::object& box, bool allow_overlaps)
-{
-  uv_unwrap::Options o;
-  o.quiet = true;
-  if(!(seam_cost > 0.) || !std::isfinite(seam_cost))
-    throw py::value_error("seam_cost must be a positive number, not " + std::to_string(seam_cost));
-  o.lambda = seam_cost;
-  if(!max_distortion.is_none())
-  {
-    o.max_distortion = max_distortion.cast<double>();
-    if(!(o.max_distortion >= 4.) || !std::isfinite(o.max_distortion))
-      throw py::value_error("max_distortion must be a number >= 4 (E_d of an isometry), not " +
-                            std::to_string(o.max_distortion));
-  }
-  if(!hide_seams.is_none())
-  {
-    o.hide_seams = hide_seams.cast<double>();
-    if(!(o.hide_seams >= 0.) || !std::isfinite(o.hide_seams))
-      throw py::value_error("hide_seams must be a number >= 0, not " + std::to_string(o.hide_seams));
-  }
-  if(texture_size < 1) throw py::value_error("texture_size must be at least 1, not " + std::to_string(texture_size));
-  o.texture_size = texture_size;
-  if(!(padding >= 0.) || !std::isfinite(padding))
-    throw py::value_error("padding must be a number >= 0 (texels), not " + std::to_string(padding));
-  o.padding = padding;
-  o.allow_overlaps = allow_overlaps;
-  // the box as uv_unwrap's options set it: default gentle square within a
-  // budget; asked for (--box W:H): tight, kept whatever it costs; False: none
-  o.box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
-  o.box_stiffness = SMP::gentle_bounding_box_stiffness;
-  if(!box.is_none())
-  {
-    o.box_distortion_budget = std::numeric_limits<double>::infinity();
-    if(py::isinstance<py::bool_>(box))
-    {
-      if(box.cast<bool>()) o.box_stiffness = SMP::tight_bounding_box_stiffness;
-      else o.box_stiffness = 0.;
-    }
-    else
-    {
-      double ratio = 0.;
-      if(py::isinstance<py::tuple>(box) || py::isinstance<py::list>(box))
-      {
-        const auto wh = box.cast<std::vector<double>>();
-        if(wh.size() != 2) throw py::value_error("box must be (width, height), a ratio, True or False");
-        ratio = wh[0] / wh[1];
-      }
-      else ratio = box.cast<double>();
-      if(!(ratio > 0.) || !std::isfinite(ratio))
-        throw py::value_error("box: the aspect ratio width / height must be a positive number");
-      o.box_aspect_ratio = ratio;
-      o.box_given = true;
-      o.box_stiffness = SMP::tight_bounding_box_stiffness;
-    }
-  }
-  return o;
-}
-
-// ---------------------------------------------------------------- result
-
-struct Result
-{
-  py::array_t<double> uv;              // (k,2)
-  py::array_t<std::int64_t> faces_uv;  // (m,3), -1 for a face the repair dropped
-  py::array_t<std::int64_t> seams;     // (s,2), vertex pairs, a < b, sorted
-  py::array_t<std::int64_t> face_charts; // (m,), -1 for a face the repair dropped
-  py::dict stats;                      // uv_unwrap --stats
-  std::vector<std::string> warnings;
-};
-
-// The chart of each face: faces joined across edges that are neither seams
-// nor borders, numbered in the order of their first face.
-std::vector<long> face_charts(const Mesh& mesh, const Mesh::Property_map<edge_descriptor, bool>& seams)
-{
-  std::vector<long> chart(num_faces(mesh), -1);
-  long next = 0;
-  std::vector<face_descriptor> stack;
-  for(face_descriptor start : faces(mesh))
-  {
-    if(chart[std::size_t(start)] >= 0) continue;
-    chart[std::size_t(start)] = next;
-    stack.push_back(start);
-    while(!stack.empty())
-    {
-      const face_descriptor f = stack.back();
-      stack.pop_back();
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-      {
-        if(seams[edge(h, mesh)] || is_border(opposite(h, mesh), mesh)) continue;
-        const face_descriptor g = face(opposite(h, mesh), mesh);
-        if(chart[std::size_t(g)] < 0)
-        {
-          chart[std::size_t(g)] = next;
-          stack.push_back(g);
-        }
-      }
-    }
-    ++next;
-  }
-  return chart;
-}
-
-using Triple = std::array<std::tuple<double, double, double>, 3>;
-
-std::tuple<double, double, double> key(const Point_3& p) { return {p.x(), p.y(), p.z()}; }
-
-// The outputs in the input's numbering. Without repair, mesh vertex i is
-// V[i] and mesh face j is F[j]; after a repair, faces are matched by their
-// corners' positions and vertices by position (the first input vertex at
-// each position).
-void fill_result(const Mesh& mesh, const Mesh::Property_map<halfedge_descriptor, Point_2>& uvmap,
-                 const Mesh::Property_map<edge_descriptor, bool>& seams, const std::vector<Point_3>& points,
-                 const std::vector<std::array<std::size_t, 3>>& polygons, bool repaired, Result& result)
-{
-  const std::size_t m = polygons.size();
-  std::vector<face_descriptor> mesh_face(m, Mesh::null_face());
-  std::vector<long> input_vertex(num_vertices(mesh), -1);
-  if(!repaired)
-  {
-    for(std::size_t j = 0; j < m; ++j) mesh_face[j] = face_descriptor(Mesh::size_type(j));
-    for(vertex_descriptor v : vertices(mesh)) input_vertex[std::size_t(v)] = long(std::size_t(v));
-  }
-  else
-  {
-    std::map<std::tuple<double, double, double>, long> first_at;
-    for(std::size_t i = points.size(); i-- > 0;) first_at[key(points[i])] = long(i);
-    for(vertex_descriptor v : vertices(mesh))
-      if(auto it = first_at.find(key(mesh.point(v))); it != first_at.end()) input_vertex[std::size_t(v)] = it->second;
-    std::map<Triple, face_descriptor> face_at;
-    for(face_descriptor f : faces(mesh))
-    {
-      Triple t;
-      int k = 0;
-      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) t[k++] = key(mesh.point(v));
-      std::sort(t.begin(), t.end());
-      face_at.emplace(t, f);
-    }
-    for(std::size_t j = 0; j < m; ++j)
-    {
-      Triple t;
-      for(int k = 0; k < 3; ++k) t[k] = key(points[polygons[j][k]]);
-      std::sort(t.begin(), t.end());
-      if(auto it = face_at.find(t); it != face_at.end()) mesh_face[j] = it->second;
-    }
-  }
-
-  // one UV per distinct (input vertex, UV): corners across a non-seam edge share it
-  std::map<std::tuple<std::size_t, double, double>, std::int64_t> uv_index;
-  std::vector<double> uvs;
-  result.faces_uv = py::array_t<std::int64_t>({py::ssize_t(m), py::ssize_t(3)});
-  auto fuv = result.faces_uv.mutable_unchecked<2>();
-  std::size_t dropped = 0;
-  for(std::size_t j = 0; j < m; ++j)
-  {
-    const face_descriptor f = mesh_face[j];
-    if(f == Mesh::null_face())
-    {
-      ++dropped;
-      for(int k = 0; k < 3; ++k) fuv(j, k) = -1;
-      continue;
-    }
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t vi = polygons[j][k];
-      Point_2 uv(std::nan(""), std::nan(""));
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-        if(mesh.point(target(h, mesh)) == points[vi]) uv = uvmap[h];
-      const auto [it, added] = uv_index.emplace(std::make_tuple(vi, uv.x(), uv.y()), std::int64_t(uvs.size() / 2));
-      if(added)
-      {
-        uvs.push_back(uv.x());
-        uvs.push_back(uv.y());
-      }
-      fuv(j, k) = it->second;
-    }
-  }
-  if(dropped > 0)
-    result.warnings.push_back(std::to_string(dropped) + " faces of F were dropped by the repair (repeated vertices "
-                              "or duplicates): their faces_uv and face_charts rows are -1");
-  result.uv = py::array_t<double>({py::ssize_t(uvs.size() / 2), py::ssize_t(2)});
-  std::copy(uvs.begin(), uvs.end(), result.uv.mutable_data());
-
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  for(edge_descriptor e : edges(mesh))
-    if(seams[e])
-    {
-      long a = input_vertex[std::size_t(source(e, mesh))], b = input_vertex[std::size_t(target(e, mesh))];
-      if(a < 0 || b < 0) continue;
-      pairs.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  result.seams = py::array_t<std::int64_t>({py::ssize_t(pairs.size()), py::ssize_t(2)});
-  auto s = result.seams.mutable_unchecked<2>();
-  for(std::size_t i = 0; i < pairs.size(); ++i)
-  {
-    s(i, 0) = pairs[i].first;
-    s(i, 1) = pairs[i].second;
-  }
-
-  const std::vector<long> chart = face_charts(mesh, seams);
-  result.face_charts = py::array_t<std::int64_t>(py::ssize_t(m));
-  auto c = result.face_charts.mutable_unchecked<1>();
-  for(std::size_t j = 0; j < m; ++j)
-    c(j) = mesh_face[j] == Mesh::null_face() ? -1 : chart[std::size_t(mesh_face[j])];
-}
 
 // OpenBLAS's threads, one during a run as uv_unwrap has (tools/blas_setup.h),
 // given back after it: the module shares its process with numpy.
