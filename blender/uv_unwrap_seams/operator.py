@@ -10,6 +10,14 @@ from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, St
 from .job import Job
 
 
+_running = []  # the job of the modal operator while it runs
+
+
+def running_job():
+    """The job of the operator running modally (from the menu), or None."""
+    return _running[0] if _running else None
+
+
 def _mesh_objects(context):
     return [o for o in context.selected_objects if o.type == 'MESH' and len(o.data.polygons) > 0]
 
@@ -151,6 +159,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
             self.report({'ERROR'}, str(e))
             return {'CANCELLED'}
         self._job_running.start()
+        _running[:] = [self._job_running]
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.1, window=context.window)
         wm.modal_handler_add(self)
@@ -175,6 +184,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         return {'RUNNING_MODAL'}
 
     def _end(self, context):
+        _running.clear()
         wm = context.window_manager
         wm.event_timer_remove(self._timer)
         wm.progress_end()
