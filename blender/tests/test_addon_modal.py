@@ -73,7 +73,7 @@ def steps():
           "one undo restores the UVs and seams")
 
     # Esc while it runs: a mesh large enough to take a few seconds
-    obj = sphere(192, 96)
+    obj = sphere(128, 64)
     name = obj.name
     before = state(obj)
     with bpy.context.temp_override(**override):
