@@ -13,9 +13,9 @@
 # (uv_unwrap on the small meshes of the data set and ../shared/meshes):
 # measured on 2 cores, they add about 7 minutes (1403 s against 995).
 # Neither the Python module (an instrumented module cannot load into an
-# uninstrumented python3), the Blender add-on, the benchmark nor the examples are built (the examples unwrap
-# whole data meshes: about 9 minutes under the sanitizers for nothing the
-# tests do not cover). Suppressions for third-party reports, if any are
+# uninstrumented python3), the Blender add-on, the benchmark nor the
+# examples are built (the examples unwrap whole data meshes: about 9
+# minutes under the sanitizers for nothing the tests do not cover). Suppressions for third-party reports, if any are
 # ever needed, go to scripts/sanitizers/ (lsan.supp, ubsan.supp).
 set -euo pipefail
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs what is missing (with Debian's blender, for the add-on's test),
+# Installs what is missing (with Debian's blender and xvfb, for the add-on's tests),
 # builds everything with the tests (Release, in build/, shared with setup.sh)
 # and runs them all.
 set -euo pipefail
