@@ -269,8 +269,9 @@ def test_other_python_threads_run_while_it_unwraps():
     seconds = time.monotonic() - start
     done.set()
     counter.join()
-    # with the GIL held throughout, the counter would stand still
-    assert ticks[0] > 0.2 * seconds / 0.001, (ticks[0], seconds)
+    # with the GIL held throughout, the counter would stand still; it sleeps
+    # 1 ms a tick, but on a busy machine its wake-ups can come much later
+    assert ticks[0] > max(20, 0.02 * seconds / 0.001), (ticks[0], seconds)
 
 
 def test_same_result_for_one_and_two_threads(cap):
