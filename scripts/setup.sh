@@ -16,7 +16,8 @@ cmake --build build --target uv_unwrap -j "$jobs"
 # CMake leaves them out, with a message, when pybind11 is missing), and a
 # .pth file that puts build/python on the path of the python3 they are built
 # for (Debian's /usr/bin/python3, whose site folder Debian's Blender shares).
-if cmake --build build --target help | grep -q blender_addon; then
+targets="$(cmake --build build --target help)" # (grep -q on a pipe would end it early: pipefail)
+if grep -q blender_addon <<<"$targets"; then
   cmake --build build --target uv_unwrap_python blender_addon -j "$jobs"
   python="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' build/CMakeCache.txt)"
   site="$("$python" -c 'import site; print(site.getsitepackages()[0])')"
