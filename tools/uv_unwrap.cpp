@@ -10,6 +10,7 @@
 #include "mesh_input.h"
 #include "mesh_output.h"
 #include "seam_constraints.h"
+#include "unwrap_run.h"
 #include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh.h>
@@ -142,63 +143,8 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
 
 // ---------------------------------------------------------------- output
 
-struct Run_summary
-{
-  std::string input;
-  std::string output;                 // empty until written
-  std::string status = "ok";          // "ok", ERROR_USAGE, an input error or a library error name
-  std::string error;                  // one-line message when status is not "ok"
-  std::vector<std::string> warnings;  // input repairs and remarks
-  std::size_t vertices = 0, faces = 0, flipped_faces = 0;
-  std::size_t border_crossings = 0;   // recounted on the output
-  bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
-  SMP::Cut_and_parameterize_result result;
-  double time_seconds = 0.;
-  double seam_visibility = std::nan(""); // with --hide-seams or --report-visibility
-  double visibility_seconds = 0.;
-};
-
-// The statistics of one run (documented in the README); numbers that are
-// not finite become null (JSON has no NaN).
-nlohmann::ordered_json statistics(const Run_summary& s)
-{
-  const SMP::Cut_and_parameterize_timings& t = s.result.timings;
-  auto number = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
-  nlohmann::ordered_json j;
-  j["input"] = s.input;
-  j["output"] = s.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.output);
-  j["status"] = s.status;
-  j["error"] = s.status == "ok" ? nlohmann::ordered_json() : nlohmann::ordered_json(s.error);
-  j["warnings"] = s.warnings;
-  j["vertices"] = s.vertices;
-  j["faces"] = s.faces;
-  j["degenerate_faces"] = s.result.number_of_degenerate_faces;
-  j["charts"] = s.result.number_of_charts;
-  j["seam_edges"] = s.result.number_of_seam_edges;
-  j["seam_length"] = number(s.result.seam_length);
-  j["distortion"] = number(s.result.distortion);
-  j["distortion_bound_met"] = s.result.distortion_bound_met;
-  j["initial_distortion"] = number(s.result.initial_distortion);
-  j["flipped_faces"] = s.flipped_faces;
-  j["border_crossings"] = s.border_crossings;
-  j["uv_coverage"] = number(s.result.uv_coverage);
-  j["uv_scale"] = number(s.result.uv_scale);
-  j["uv_in_unit_square"] = s.uv_in_unit_square;
-  j["time_seconds"] = number(s.time_seconds);
-  j["seam_visibility"] = number(s.seam_visibility);
-  j["visibility_seconds"] = number(s.visibility_seconds);
-  j["newton_iterations"] = s.result.newton_iterations;
-  j["factorizations"] = s.result.number_of_factorizations;
-  j["timings"] = {{"initialization", number(t.initialization)}, {"u_steps", number(t.u_steps)},
-                  {"v_steps", number(t.v_steps)}, {"cut_extraction", number(t.cut_extraction)},
-                  {"final_solve", number(t.final_solve)}, {"packing", number(t.packing)},
-                  {"total", number(t.total)}};
-  if(s.status != "ok") // nothing was measured: no figure rather than zeros
-    for(auto& [key, value] : j.items())
-      if(value.is_number() || value.is_boolean() || value.is_object())
-        if(key != "vertices" && key != "faces") value = nullptr;
-  return j;
-}
+using uv_unwrap::Run_summary;
+using uv_unwrap::statistics;
 
 void write_stats(const std::string& filename, const Run_summary& s)
 {
@@ -371,17 +317,18 @@ void read_constraints(const Options& options, const Mesh& mesh, const Mesh_sourc
   }
 }
 
-// cut_and_parameterize() with the options; fills the summary's result and
-// the counts measured on the output. Throws Failure if the library fails.
-// `source`: the file the mesh comes from (null for glTF primitives and the
-// built-in mesh), for the constraints given in its numbering.
+// cut_and_parameterize() with the options (tools/unwrap_run.h), progress
+// and warnings on stderr. `source`: the file the mesh comes from (null for
+// glTF primitives and the built-in mesh), for the constraints given in its
+// numbering.
 template <typename SeamMap, typename UVMap, typename VMap>
 void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field, Run_summary& summary,
                  const Mesh_source* source = nullptr)
 {
   // Progress goes to stderr so that stdout keeps the summary only.
-  std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
-    [](const SMP::Cut_and_parameterize_progress& p) {
+  uv_unwrap::Progress progress;
+  if(!options.quiet)
+    progress = [](const SMP::Cut_and_parameterize_progress& p) {
       const std::string phase = p.phase;
       std::cerr << "  " << phase << ":";
       if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
@@ -391,66 +338,14 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
       std::cerr << " E_d " << p.distortion << std::endl;
       return true;
     };
-
-  // visibility: to steer the seams (--hide-seams) or to report where they lie
-  auto visibility = mesh.add_property_map<face_descriptor, double>("f:visibility", 1.).first;
-  auto face_lambda = mesh.add_property_map<face_descriptor, double>("f:lambda", 1.).first;
-  const bool visibility_wanted = options.hide_seams > 0. || options.report_visibility;
-  if(visibility_wanted)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    const SMP::Error_code status = SMP::face_visibility(mesh, visibility);
-    if(status != SMP::OK)
-      throw Failure(std::string("visibility failed: ") + SMP::error_message(status), SMP::error_name(status));
-    if(options.hide_seams > 0.) SMP::visibility_face_lambda(mesh, visibility, face_lambda, options.hide_seams);
-    summary.visibility_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  auto forbidden = mesh.add_property_map<edge_descriptor, bool>("e:forbidden", false).first;
-  read_constraints(options, mesh, source, seams, forbidden, face_lambda);
-
-  namespace P = SMP::parameters;
-  const auto np = P::lambda(options.lambda,
-                  P::face_lambda_map(face_lambda,
-                  P::forbidden_seam_edge_map(forbidden,
-                  P::epsilon_start(options.epsilon_start,
-                  P::epsilon_end(options.epsilon_end,
-                  P::iterations_per_epsilon(options.iterations,
-                  P::number_of_passes(options.passes,
-                  P::distortion_bound(options.max_distortion,
-                  P::global_injectivity(!options.allow_overlaps,
-                  P::world_units(options.world_units,
-                  P::texture_size(options.texture_size,
-                  P::padding(options.padding,
-                  P::bounding_box_aspect_ratio(options.box_aspect_ratio,
-                  P::bounding_box_stiffness(options.box_stiffness,
-                  P::bounding_box_distortion_budget(options.box_distortion_budget,
-                  P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))))));
-
-  const auto start = std::chrono::steady_clock::now();
-  summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
-  summary.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if(!summary.result.ok())
-    throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
-                  SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
-  if(!summary.result.distortion_bound_met)
-  {
-    const std::string w = "E_d " + std::to_string(summary.result.distortion) + " is above --max-distortion " +
-                          std::to_string(options.max_distortion) + ": no seam cost tried reached it (lowest E_d kept)";
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
-    summary.warnings.push_back(w);
-  }
-  if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
-  summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
-  summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
-  summary.uv_in_unit_square = true;
-  for(face_descriptor f : faces(mesh))
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      const Point_2& uv = uvmap[h];
-      if(!(uv.x() >= 0. && uv.x() <= 1. && uv.y() >= 0. && uv.y() <= 1.)) summary.uv_in_unit_square = false;
-    }
-
+  const std::size_t warned = summary.warnings.size();
+  uv_unwrap::unwrap_mesh(options, mesh, seams, uvmap, v_field, progress,
+                         [&](auto forbidden, auto face_lambda) {
+                           read_constraints(options, mesh, source, seams, forbidden, face_lambda);
+                         },
+                         summary);
+  for(std::size_t i = warned; i < summary.warnings.size(); ++i)
+    std::cerr << "uv_unwrap: warning: " << summary.warnings[i] << std::endl;
 }
 
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),

@@ -47,28 +47,32 @@ std::string lower_extension(const std::string& filename)
 /// Throws Input_error; fills `report` (warnings included) otherwise.
 void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& report)
 {
+  std::vector<File_point> file_points;
+  std::vector<std::vector<std::size_t>> polygons;
+  detail::read_soup(filename, file_points, polygons);
+  mesh_from_polygon_soup(file_points, std::move(polygons), detail::quoted(filename), mesh, report);
+}
+
+void mesh_from_polygon_soup(const std::vector<File_point>& file_points, std::vector<std::vector<std::size_t>> polygons,
+                            const std::string& name, Mesh& mesh, Input_report& report)
+{
   namespace PMP = CGAL::Polygon_mesh_processing;
   mesh.clear();
   report = Input_report();
 
   std::vector<Point_3> points;
-  std::vector<detail::Polygon> polygons;
+  for(std::size_t v = 0; v < file_points.size(); ++v)
   {
-    std::vector<File_point> file_points;
-    detail::read_soup(filename, file_points, polygons);
-    for(std::size_t v = 0; v < file_points.size(); ++v)
-    {
-      const File_point& p = file_points[v];
-      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-        detail::fail("ERROR_NON_FINITE_COORDINATE", detail::quoted(filename) + ": vertex " + std::to_string(v) +
-                                                    " has a non-finite coordinate " + format_point(p));
-    }
-    points.reserve(file_points.size());
-    for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());
+    const File_point& p = file_points[v];
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      detail::fail("ERROR_NON_FINITE_COORDINATE", name + ": vertex " + std::to_string(v) +
+                                                  " has a non-finite coordinate " + format_point(p));
   }
+  points.reserve(file_points.size());
+  for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());
   report.file_vertices = points.size();
   report.file_faces = polygons.size();
-  if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + " has no faces");
+  if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", name + " has no faces");
 
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
@@ -78,10 +82,10 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
     PMP::repair_polygon_soup(points, polygons);
     PMP::orient_polygon_soup(points, polygons);
     if(polygons.empty())
-      detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + ": no valid face left after repairing (" +
+      detail::fail("ERROR_EMPTY_MESH", name + ": no valid face left after repairing (" +
                                        problem + ")");
     if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      detail::fail("ERROR_NON_MANIFOLD", detail::quoted(filename) + " is not manifold (" + problem +
+      detail::fail("ERROR_NON_MANIFOLD", name + " is not manifold (" + problem +
                                          ") and could not be repaired");
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
     const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
@@ -129,7 +133,7 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
         report.face_origin.resize(num_faces(mesh), report.face_origin[std::size_t(f)]);
     }
     if(!CGAL::is_triangle_mesh(mesh) || !mesh.is_valid(false))
-      detail::fail("ERROR_NON_TRIANGULAR_MESH", detail::quoted(filename) + ": face " +
+      detail::fail("ERROR_NON_TRIANGULAR_MESH", name + ": face " +
                                                 std::to_string(first_polygon) + " could not be triangulated");
     report.triangulated_faces = polygons_to_split.size();
     report.warnings.push_back(
