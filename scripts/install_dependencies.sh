@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those missing.
 # Used by setup.sh and test.sh; safe to run again (does nothing then).
+# Arguments, if any: the packages to install instead of the project's (as
+# scripts/install_gltf_validator.sh does for nodejs and npm).
 # libcli11-dev, nlohmann-json3-dev, libtinygltf-dev, libgtest-dev: command lines,
 # JSON, glTF, tests.
 # libopenblas0-pthread: the BLAS behind CHOLMOD on large meshes (Debian's
@@ -10,6 +12,9 @@ set -euo pipefail
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libmetis-dev libtbb-dev
           libopenblas0-pthread libcgal-demo libstb-dev doxygen libcli11-dev nlohmann-json3-dev libgtest-dev
           libtinygltf-dev)
+if [ $# -gt 0 ]; then
+  packages=("$@")
+fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   echo "install_dependencies: not a Debian-like system; install these yourself: ${packages[*]}" >&2

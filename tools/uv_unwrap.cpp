@@ -32,6 +32,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -49,6 +50,18 @@ namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
+
+// Ctrl-C (SIGINT) or SIGTERM: the unwrapping in progress stops at its next
+// progress report (ERROR_CANCELED), nothing more is written, the outputs of
+// the input in progress are removed, and uv_unwrap exits with
+// exit_status_interrupted. A second signal ends the process at once.
+volatile std::sig_atomic_t interrupted = 0;
+constexpr int exit_status_interrupted = 130; // 128 + SIGINT, as shells report it
+void on_interrupt(int signal_number)
+{
+  interrupted = 1;
+  std::signal(signal_number, SIG_DFL);
+}
 
 using Kernel = mesh_input::Kernel;
 using Point_2 = Kernel::Point_2;
@@ -151,6 +164,7 @@ struct Run_summary
   std::vector<std::string> warnings;  // input repairs and remarks
   std::size_t vertices = 0, faces = 0, flipped_faces = 0;
   std::size_t border_crossings = 0;   // recounted on the output
+  double overlap_area = 0.;           // UV area covered more than once, measured on the output
   bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
   SMP::Cut_and_parameterize_result result;
   double time_seconds = 0.;
@@ -181,6 +195,7 @@ nlohmann::ordered_json statistics(const Run_summary& s)
   j["initial_distortion"] = number(s.result.initial_distortion);
   j["flipped_faces"] = s.flipped_faces;
   j["border_crossings"] = s.border_crossings;
+  j["overlap_area"] = number(s.overlap_area);
   j["uv_coverage"] = number(s.result.uv_coverage);
   j["uv_scale"] = number(s.result.uv_scale);
   j["uv_in_unit_square"] = s.uv_in_unit_square;
@@ -381,7 +396,9 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
 {
   // Progress goes to stderr so that stdout keeps the summary only.
   std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
-    [](const SMP::Cut_and_parameterize_progress& p) {
+    [quiet = options.quiet](const SMP::Cut_and_parameterize_progress& p) {
+      if(interrupted) return false; // Ctrl-C: ERROR_CANCELED
+      if(quiet) return true;
       const std::string phase = p.phase;
       std::cerr << "  " << phase << ":";
       if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
@@ -425,11 +442,12 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   P::bounding_box_stiffness(options.box_stiffness,
                   P::bounding_box_distortion_budget(options.box_distortion_budget,
                   P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))))));
+                  P::progress_callback(progress)))))))))))))))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
   summary.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if(summary.result.ok() && interrupted) summary.result.error = SMP::ERROR_CANCELED; // after its last report
   if(!summary.result.ok())
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
                   SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
@@ -443,6 +461,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
   summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
+  summary.overlap_area = SMP::uv_overlap_area(mesh, uvmap);
   summary.uv_in_unit_square = true;
   for(face_descriptor f : faces(mesh))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
@@ -535,6 +554,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       summary.faces += num_faces(mesh);
       summary.flipped_faces += part.flipped_faces;
       summary.border_crossings += part.border_crossings;
+      summary.overlap_area += part.overlap_area; // each primitive has an atlas of its own
       summary.uv_in_unit_square = summary.uv_in_unit_square && part.uv_in_unit_square;
       summary.time_seconds += part.time_seconds;
       total.number_of_charts += r.number_of_charts;
@@ -572,6 +592,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
     std::cerr << "uv_unwrap: warning: " << w << std::endl;
     summary.warnings.push_back(w);
   }
+  if(interrupted) throw Failure("interrupted", "ERROR_CANCELED");
   try
   {
     gltf_io::save(doc, output);
@@ -584,7 +605,8 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
   if(!options.quiet)
     std::cout << "  " << primitives.size() << " primitives: charts " << total.number_of_charts << ", E_d "
               << total.distortion << ", E_s " << total.seam_length << ", flipped faces " << summary.flipped_faces
-              << ", border crossings " << summary.border_crossings << "\n  wrote " << output << std::endl;
+              << ", border crossings " << summary.border_crossings << ", overlap area " << summary.overlap_area
+              << "\n  wrote " << output << std::endl;
 }
 
 void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
@@ -655,6 +677,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
               << "  distortion E_d " << r.distortion << " (initial " << r.initial_distortion
               << "), flipped faces " << summary.flipped_faces << "\n"
               << "  UV coverage " << 100. * r.uv_coverage << " %, border crossings " << summary.border_crossings
+              << ", overlap area " << summary.overlap_area
               << ", UVs " << (summary.uv_in_unit_square ? "in" : "not in") << " the unit square\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
               << (std::isnan(summary.seam_visibility) ? std::string()
@@ -678,6 +701,15 @@ Run_summary unwrap_one(const char* argv0, const Options& options, const std::str
   try
   {
     run(argv0, options, input, summary);
+    if(interrupted) // during the writing: none of this input's files stays
+    {
+      std::error_code ignored;
+      for(const std::string* file : {static_cast<const std::string*>(&summary.output), &options.svg, &options.png, &options.v_field, &options.v_png,
+                                     &options.save_seams_file})
+        if(!file->empty()) fs::remove(*file, ignored);
+      summary.output.clear();
+      throw Failure("interrupted", "ERROR_CANCELED");
+    }
   }
   catch(const Failure& e)
   {
@@ -719,6 +751,8 @@ int main(int argc, char** argv)
   cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
   cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();   // see malloc_settings.h
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   Options options;
   try
   {
@@ -779,6 +813,7 @@ int main(int argc, char** argv)
                 << std::endl;
     }
     if(jsonl) *jsonl << statistics(summary).dump() << std::endl;
+    if(interrupted) break; // the inputs left are not started
   }
   if(jsonl && !*jsonl)
   {
@@ -788,5 +823,6 @@ int main(int argc, char** argv)
   if(inputs.size() > 1 && !options.quiet)
     std::cout << "uv_unwrap: " << inputs.size() - failures << " of " << inputs.size() << " inputs unwrapped"
               << std::endl;
+  if(interrupted) return exit_status_interrupted;
   return std::min(failures, 100);
 }
