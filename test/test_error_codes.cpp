@@ -283,7 +283,8 @@ TYPED_TEST(ErrorCodesTyped, non_manifold_vertex)
   EXPECT_EQ(parameterize(other), SMP::ERROR_NON_MANIFOLD);
 }
 
-TYPED_TEST(ErrorCodesTyped, tiny_boundary_ear_uses_the_tutte_fallback)
+// (the evenly spaced fallback is internal: what is checked is the map it gives)
+TYPED_TEST(ErrorCodesTyped, tiny_boundary_ear_gives_a_flip_free_map)
 {
   // A well-shaped ear 1e-10 wide at a corner of a unit square: arc-length
   // spacing puts its three corners on the circle within 1e-10 of each other,

@@ -55,6 +55,7 @@ struct Expected
   long genus = 0;              // of the input (checked when it has one component)
   std::size_t components = 1;
   double max_distortion = std::numeric_limits<double>::infinity();
+  long border_cycles = -1;     // of the input, checked when >= 0
 };
 
 /// Runs cut_and_parameterize with the defaults and checks the atlas.
@@ -65,6 +66,7 @@ Chart_report<Mesh> unwrap_and_check(const Mesh& mesh, const Expected& expected)
   const std::size_t components = number_of_face_components(mesh);
   EXPECT_EQ(components, expected.components);
   if(expected.components == 1) EXPECT_EQ(genus(mesh), expected.genus);
+  if(expected.border_cycles >= 0) EXPECT_EQ(long(number_of_border_cycles(mesh)), expected.border_cycles);
 
   Cut_run<Mesh> run(mesh);
   run.run();
@@ -244,6 +246,7 @@ TYPED_TEST(TopologyData, holes_genus_0_seven_holes)
 {
   Expected e;
   e.genus = 0;
+  e.border_cycles = 7;
   data_mesh_case<TypeParam>("holes.off", e);
 }
 
