@@ -66,14 +66,13 @@ struct Cut_run
     for(face_descriptor f : faces(mesh)) v_storage[f] = 0.;
   }
 
-  /// Fills every output with values no run writes (every third edge a seam,
-  /// a distinct UV off the unit square per halfedge, v = -0.375 + ...), and
-  /// keeps them for expect_outputs_untouched().
+  /// Fills the outputs with values no run writes (a distinct UV off the unit
+  /// square per halfedge, v = -0.375 - k per face) and keeps them, with the
+  /// seam flags as they are (an input too: the given seams), for
+  /// expect_outputs_untouched().
   void fill_sentinels()
   {
     std::size_t k = 0;
-    for(edge_descriptor e : edges(mesh)) seam_storage[e] = (k++ % 3 == 0);
-    k = 0;
     for(halfedge_descriptor h : halfedges(mesh))
     {
       uv_storage[h] = Point_2(-7.25 - double(k), 3.5 + 0.5 * double(k));

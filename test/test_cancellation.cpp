@@ -50,13 +50,13 @@ TEST(Cancellation, in_the_split_trials_of_the_bound_mode)
 {
   const Surface_mesh mesh = make_mesh<Surface_mesh>(sphere_cap_soup(10, 32, 5. * pi / 6.));
   expect_canceled_in(mesh, "split", SMP::parameters::distortion_bound(4.2));
-  expect_canceled_in(mesh, "final", SMP::parameters::distortion_bound(4.2));
 }
 
 TEST(Cancellation, in_a_multiresolution_run)
 {
   // 4,608 faces simplified to about 600 for the alternation
   const Surface_mesh mesh = make_mesh<Surface_mesh>(torus_soup(72, 32));
-  for(const char* phase : {"alternate", "cut", "final"})
+  // (its final solve, on the whole mesh, is the default mode's: left out to keep the sanitizers' run short)
+  for(const char* phase : {"alternate", "cut"})
     expect_canceled_in(mesh, phase, SMP::parameters::multiresolution_faces(600), 2);
 }
