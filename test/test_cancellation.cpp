@@ -41,7 +41,8 @@ void expect_canceled_in(const Surface_mesh& mesh, const std::string& phase, cons
 
 TEST(Cancellation, in_each_phase_of_the_default_mode)
 {
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(12, 24, 1.5, 0.2));
+  // a tall cone: the alternation cuts it to its apex, so that "cut" is reported
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(cone_soup(12, 32, 1., 6.));
   for(const char* phase : {"initialize", "alternate", "cut", "final"})
     expect_canceled_in(mesh, phase, CGAL::parameters::default_values(), 3);
 }
@@ -54,8 +55,9 @@ TEST(Cancellation, in_the_split_trials_of_the_bound_mode)
 
 TEST(Cancellation, in_a_multiresolution_run)
 {
-  // 4,608 faces simplified to about 600 for the alternation
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(torus_soup(72, 32));
+  // the tall cone at 3,008 faces, simplified to about 600 for the alternation
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(cone_soup(24, 64, 1., 6.));
+  ASSERT_GT(num_faces(mesh), std::size_t(2 * 600));
   // (its final solve, on the whole mesh, is the default mode's: left out to keep the sanitizers' run short)
   for(const char* phase : {"alternate", "cut"})
     expect_canceled_in(mesh, phase, SMP::parameters::multiresolution_faces(600), 2);
