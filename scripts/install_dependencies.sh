@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those missing.
 # Used by setup.sh and test.sh; safe to run again (does nothing then).
+# Arguments, if any: the packages to install instead of the project's (as
+# scripts/install_gltf_validator.sh does for nodejs and npm).
 # libcli11-dev, nlohmann-json3-dev, libtinygltf-dev, libgtest-dev: command lines,
 # JSON, glTF, tests.
 # libopenblas0-pthread: the BLAS behind CHOLMOD on large meshes (Debian's
@@ -17,6 +19,8 @@ packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-d
           libtinygltf-dev python3-dev python3-pybind11 python3-numpy python3-pytest)
 if [ "${1:-}" = "--with-blender" ]; then
   packages+=(blender xvfb xauth)
+elif [ $# -gt 0 ]; then
+  packages=("$@")
 fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then

@@ -55,6 +55,10 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_F
   -DCUT_PARAM_BUILD_PYTHON=OFF \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags"
 cmake --build "$build" -j "$jobs"
+# the tools' tests include the glTF-Validator check (see scripts/test.sh)
+if [ "$tool_tests" = ON ]; then
+  bash scripts/install_gltf_validator.sh "$build/gltf-validator"
+fi
 
 supp="$root/scripts/sanitizers"
 asan="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"

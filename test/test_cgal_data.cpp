@@ -92,7 +92,8 @@ TYPED_TEST(CgalDataTyped, closed_sphere_opened_by_a_seam_path)
   auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
   ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(seam_mesh, uv), SMP::OK);
   EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, uv), std::size_t(0));
-  EXPECT_TRUE(std::isfinite(SMP::distortion_energy(seam_mesh, uv)));
+  // what the optimizer reaches with this one seam path (measured), plus a margin
+  EXPECT_LT(SMP::distortion_energy(seam_mesh, uv), 4.79); // reached: 4.6070
   EXPECT_TRUE(SMP::seam_length(mesh, sem) > 0.);
 }
 

@@ -89,16 +89,17 @@ TYPED_TEST(Distortion_bound, bounds_below_four_are_refused)
   {
     SCOPED_TRACE("bound " + to_text(bad));
     Cut_run<TypeParam> run(mesh);
-    run.run(SMP::parameters::distortion_bound(bad));
+    run.fill_sentinels();
+    run.run(SMP::parameters::distortion_bound(bad, SMP::parameters::face_discontinuity_map(run.v())));
     EXPECT_EQ(run.result.error, SMP::ERROR_WRONG_PARAMETER);
-    EXPECT_EQ(run.number_of_seam_edges(), 0u); // outputs untouched
+    run.expect_outputs_untouched();
   }
 }
 
-#ifdef CGAL_LINKED_WITH_TBB
 // The search runs its trials in pairs at once; the pair's results are read
 // in order, so the chosen trial and its map do not depend on the threads
-// (one mesh type: the threads do not depend on it; 43 s under the sanitizers).
+// (one mesh type: the threads do not depend on it; 43 s under the sanitizers;
+// skipped without TBB).
 TEST(Distortion_bound_threads, the_result_is_the_same_for_any_number_of_threads)
 {
   const Surface_mesh mesh = make_mesh<Surface_mesh>(wide_cap());
@@ -108,7 +109,6 @@ TEST(Distortion_bound_threads, the_result_is_the_same_for_any_number_of_threads)
     return result;
   });
 }
-#endif
 
 TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_can_cancel)
 {
@@ -131,9 +131,11 @@ TYPED_TEST(Distortion_bound, a_progress_callback_sees_one_trial_at_a_time_and_ca
   int seen = 0;
   auto cancel = [&](const SMP::Cut_and_parameterize_progress&) { return ++seen < 20; };
   Cut_run<TypeParam> canceled(mesh);
-  canceled.run(SMP::parameters::progress_callback(cancel, SMP::parameters::distortion_bound(4.2)));
+  canceled.fill_sentinels();
+  canceled.run(SMP::parameters::progress_callback(cancel, SMP::parameters::distortion_bound(4.2,
+                 SMP::parameters::face_discontinuity_map(canceled.v()))));
   EXPECT_EQ(canceled.result.error, SMP::ERROR_CANCELED);
-  EXPECT_EQ(canceled.number_of_seam_edges(), 0u); // outputs untouched
+  canceled.expect_outputs_untouched();
 }
 
 TEST(Distortion_bound_splits, split_trials_reach_a_reachable_bound_by_cutting)

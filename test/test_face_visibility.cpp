@@ -84,6 +84,9 @@ TYPED_TEST(Face_visibility, inside_a_closed_surface_sees_nothing)
 
 TYPED_TEST(Face_visibility, same_result_with_one_and_two_threads)
 {
+#ifndef CGAL_LINKED_WITH_TBB
+  GTEST_SKIP() << "built without TBB: one thread only";
+#endif
   TypeParam mesh;
   build_mesh(thickened_soup(wavy_disk_soup(6, 16, 3), 0.05), mesh);
   std::vector<double> one, two;

@@ -149,8 +149,10 @@ TYPED_TEST(Forbidden_seams, closed_surface_with_every_edge_forbidden_is_refused)
     Edge_flags<Mesh> forbidden = no_edge(mesh);
     for(auto e : edges(mesh)) forbidden[e] = true;
     cut_test::Cut_run<Mesh> run(mesh);
-    EXPECT_EQ(run_forbidding(mesh, forbidden, run), SMP::ERROR_FORBIDDEN_EDGES_BLOCK_CUT);
-    EXPECT_EQ(run.number_of_seam_edges(), 0u); // outputs untouched
+    run.fill_sentinels();
+    EXPECT_EQ(run_forbidding(mesh, forbidden, run, SMP::parameters::face_discontinuity_map(run.v())),
+              SMP::ERROR_FORBIDDEN_EDGES_BLOCK_CUT);
+    run.expect_outputs_untouched();
   }
 }
 

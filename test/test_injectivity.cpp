@@ -33,6 +33,10 @@ std::vector<std::pair<std::string, Soup>> overlapping_shapes()
           {"saddle with a deep slit", slit_saddle_soup(10, 36, 2)}};
 }
 
+/// E_d each shape must stay below with global injectivity, in the order of
+/// overlapping_shapes(): what the method reaches (measured) plus a margin.
+const double injective_distortion_bound[] = {4.02, 4.03, 4.17}; // reached: 4.0004, 4.0042, 4.1161
+
 /// Unwraps `soup` without, then with global injectivity; returns the E_d of both.
 template <typename Mesh>
 std::pair<double, double> unwrap_both_ways(const Soup& soup)
@@ -102,11 +106,13 @@ TYPED_TEST_SUITE(InjectivityTyped, Mesh_types);
 
 TYPED_TEST(InjectivityTyped, overlapping_shapes_come_out_injective)
 {
+  std::size_t k = 0;
   for(const auto& shape : overlapping_shapes())
   {
     SCOPED_TRACE(shape.first);
     const auto distortion = unwrap_both_ways<TypeParam>(shape.second);
-    EXPECT_TRUE(std::isfinite(distortion.second) && distortion.second >= 4.);
+    EXPECT_GE(distortion.second, 4.);
+    EXPECT_LT(distortion.second, injective_distortion_bound[k++]) << "E_d without the barrier " << distortion.first;
   }
 }
 

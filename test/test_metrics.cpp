@@ -1,10 +1,12 @@
 // Public metrics (parameterization_metrics.h) on hand-computed cases:
 // face_distortion / distortion_energy (E_d), number_of_flipped_faces,
-// surface_area, seam_length (E_s), number_of_border_crossings, uv_area, with
-// vertex- and halfedge-keyed UV maps.
+// surface_area, seam_length (E_s), number_of_border_crossings, uv_area,
+// uv_overlap_area, with vertex- and halfedge-keyed UV maps.
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+
+#include <CGAL/Exact_rational.h>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using namespace cut_test;
@@ -65,7 +67,18 @@ void copy_to_corners(const Mesh& mesh, const VertexUV& vertex_uv, HalfedgeUV& co
 const double strip_loop_uv[2][5][2] = {{{0, -0.5}, {4.5, -0.5}, {4.5, 3.5}, {1.5, 3.5}, {1.5, -2}},  // j = 0 (outer side)
                                        {{0, 0.5}, {3.5, 0.5}, {3.5, 2.5}, {2.5, 2.5}, {2.5, -2}}}; // j = 1 (inner side)
 
-/// Brute force: pairs of the faces' UV edges, in different faces, that cross properly.
+/// Sign of the orientation of (p, q, r) in exact rational arithmetic: a
+/// predicate of the test's own, independent of the library's.
+int exact_orientation(const SMP::internal::cut::Vector2& p, const SMP::internal::cut::Vector2& q,
+                      const SMP::internal::cut::Vector2& r)
+{
+  using Q = CGAL::Exact_rational;
+  const Q d = (Q(q.x()) - Q(p.x())) * (Q(r.y()) - Q(p.y())) - (Q(q.y()) - Q(p.y())) * (Q(r.x()) - Q(p.x()));
+  return int(CGAL::sign(d));
+}
+
+/// Brute force: pairs of the faces' UV edges, in different faces, that cross
+/// properly (each segment's endpoints strictly on both sides of the other's line).
 template <typename Mesh, typename HalfedgeUV>
 std::size_t crossings_of_separate_faces(const Mesh& mesh, const HalfedgeUV& corner_uv)
 {
@@ -85,9 +98,14 @@ std::size_t crossings_of_separate_faces(const Mesh& mesh, const HalfedgeUV& corn
   std::size_t n = 0;
   for(std::size_t a = 0; a < edges_uv.size(); ++a)
     for(std::size_t b = a + 1; b < edges_uv.size(); ++b)
+    {
+      const auto& s = edges_uv[a];
+      const auto& t = edges_uv[b];
       if(face_index[a] != face_index[b] &&
-         SMP::internal::cut::segments_cross_properly(edges_uv[a][0], edges_uv[a][1], edges_uv[b][0], edges_uv[b][1]))
+         exact_orientation(s[0], s[1], t[0]) * exact_orientation(s[0], s[1], t[1]) < 0 &&
+         exact_orientation(t[0], t[1], s[0]) * exact_orientation(t[0], t[1], s[1]) < 0)
         ++n;
+    }
   return n;
 }
 
@@ -579,3 +597,80 @@ TYPED_TEST(MetricsTyped, uv_area_of_known_layouts)
   EXPECT_EQ(SMP::number_of_border_crossings(mesh2, corner_uv), std::size_t(0));
 }
 
+
+TYPED_TEST(MetricsTyped, overlap_area_sees_stacked_and_nested_charts)
+{
+  // two squares of 4 x 4 cells (32 triangles each, vertices on the sample
+  // grid's cell corners and centers' lines): apart, side by side, stacked,
+  // nested, shifted by half; the crossing count misses the stacked and
+  // nested layouts, the overlap area does not
+  Soup soup = grid_soup(4, 4, 1., 1.);
+  soup.append(grid_soup(4, 4, 1., 1.));
+  TypeParam mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  const std::size_t half = soup.points.size() / 2;
+  auto lay = [&](double x1, double y1, double s1) {
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+    {
+      const double x = soup.points[i][0], y = soup.points[i][1];
+      put(uv, vertex_of[i], i < half ? Point_2(x, y) : Point_2(x1 + s1 * x, y1 + s1 * y));
+    }
+  };
+  // 256 x 256 samples (the default, 1024, takes 16 times longer)
+  lay(2., 0., 1.); // apart
+  EXPECT_EQ(SMP::uv_overlap_area(mesh, uv), 0.);
+  lay(1., 0., 1.); // sharing a side
+  EXPECT_EQ(SMP::uv_overlap_area(mesh, uv, 256), 0.);
+  EXPECT_EQ(SMP::uv_overlap_area(mesh, uv, 7), 0.); // samples on shared edges and vertices
+  lay(0., 0., 1.); // stacked: the second square covers the first
+  EXPECT_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 256), 1., 1e-12); // samples at cell centers: exact here
+  lay(0.25, 0.25, 0.5); // nested: a quarter of the area inside the first
+  EXPECT_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 256), 0.25, 1e-12);
+  lay(0.5, 0., 1.); // shifted by half a side: [0.5, 1] x [0, 1] covered twice (bounding box 1.5 wide)
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 256), 0.5, 1.5 * 1.5 * 4. / 256.); // a column of cells either way
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 999), 0.5, 1.5 * 1.5 * 4. / 999.);
+  // a point covered three times counts twice
+  Soup three = grid_soup(1, 1, 1., 1.);
+  three.append(grid_soup(1, 1, 1., 1.));
+  three.append(grid_soup(1, 1, 1., 1.));
+  TypeParam stack;
+  const auto vertex_of_three = build_mesh(three, stack);
+  auto uv3 = vertex_uv_map(stack);
+  for(std::size_t i = 0; i < three.points.size(); ++i)
+    put(uv3, vertex_of_three[i], Point_2(three.points[i][0], three.points[i][1]));
+  EXPECT_NEAR(SMP::uv_overlap_area(stack, uv3, 64), 2., 1e-12);
+  // a non-finite UV: NaN, like uv_area()
+  put(uv3, vertex_of_three[0], Point_2(std::numeric_limits<double>::quiet_NaN(), 0.));
+  EXPECT_TRUE(std::isnan(SMP::uv_overlap_area(stack, uv3, 64)));
+}
+
+TYPED_TEST(MetricsTyped, overlap_area_of_folds_and_of_a_valid_fan)
+{
+  // the fan of square_fan_soup(): no overlap at any resolution (its
+  // center and sides fall on samples at odd resolutions), corner-keyed too
+  const Soup soup = square_fan_soup();
+  TypeParam mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  auto uv = vertex_uv_map(mesh);
+  for(std::size_t i = 0; i < 5; ++i) put(uv, vertex_of[i], Point_2(soup.points[i][0], soup.points[i][1]));
+  auto corner_uv = halfedge_uv_map(mesh);
+  copy_to_corners(mesh, uv, corner_uv);
+  for(std::size_t resolution : {1u, 2u, 3u, 5u, 64u, 255u})
+  {
+    SCOPED_TRACE("resolution " + to_text(double(resolution)));
+    EXPECT_EQ(SMP::uv_overlap_area(mesh, uv, resolution), 0.);
+    EXPECT_EQ(SMP::uv_overlap_area(mesh, corner_uv, resolution), 0.);
+  }
+  // the center moved out below the square: the bottom face flips. Signed
+  // coverage is the border's winding number (1 in the square, 0 outside),
+  // so the flipped bottom triangle, outside the square, lies under exactly
+  // one other face: covered twice on its area 1/4, the rest once. No
+  // border crosses another.
+  put(uv, vertex_of[4], Point_2(0.5, -0.5));
+  EXPECT_EQ(SMP::number_of_border_crossings(mesh, uv), std::size_t(0));
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv), 0.25, 1.5 * 3. / 1024.); // its perimeter times a cell side
+  EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 257), 0.25, 1.5 * 3. / 257.);
+}

@@ -117,9 +117,8 @@ TYPED_TEST(MultiresolutionTyped, user_seams_are_kept_through_the_copy)
   for(auto e : given) EXPECT_TRUE(run.is_seam(e));
 }
 
-#ifdef CGAL_LINKED_WITH_TBB
 // The simplification is sequential and the rest is deterministic: the same
-// seams and UVs for any number of threads.
+// seams and UVs for any number of threads (skipped without TBB).
 TEST(Multiresolution, coarse_copy_is_deterministic_across_thread_counts)
 {
   const Surface_mesh mesh = make_mesh<Surface_mesh>(test_torus());
@@ -127,7 +126,6 @@ TEST(Multiresolution, coarse_copy_is_deterministic_across_thread_counts)
     return run.run(SMP::parameters::multiresolution_faces(coarse_faces));
   });
 }
-#endif
 
 TEST(Multiresolution, negative_size_is_a_wrong_parameter)
 {

@@ -73,7 +73,9 @@ TYPED_TEST(OptimizerHeavyTyped, large_closed_surfaces_opened_by_seams)
     auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
     ASSERT_EQ(SMP::symmetric_dirichlet_parameterize(seam_mesh, uv), SMP::OK);
     EXPECT_EQ(SMP::number_of_flipped_faces(seam_mesh, uv), std::size_t(0));
-    EXPECT_TRUE(std::isfinite(SMP::distortion_energy(seam_mesh, uv)));
+    // what the optimizer reaches with this one seam path (measured), plus a margin
+    const double bound = std::string(c.first) == "sphere" ? 4.79 : 4.28; // reached: 4.6092, 4.2081
+    EXPECT_LT(SMP::distortion_energy(seam_mesh, uv), bound);
   }
 }
 

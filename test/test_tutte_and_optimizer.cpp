@@ -462,11 +462,13 @@ TEST(TutteAndOptimizer, sparse_cholesky_reads_the_lower_triangle_of_any_storage)
 }
 
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-TEST(TutteAndOptimizer, cholmod_runs_its_openmp_regions_serially)
+TEST(TutteAndOptimizer, serial_openmp_scope_and_cholmod_keep_the_callers_openmp_setting)
 {
-  // A system of CHOLMOD's size (a grid Laplacian plus identity) is solved,
-  // with OpenMP regions kept on the calling thread meanwhile; the thread's
-  // own setting is given back after.
+  // Serial_openmp_scope turns nested OpenMP regions off (max active levels
+  // 0) while it lives and gives the thread's setting back; a system of
+  // CHOLMOD's size (a grid Laplacian plus identity) is then solved right,
+  // and the caller's setting is the same after. (Whether CHOLMOD's regions
+  // actually ran on one thread is not observable from here.)
   if(omp_get_max_active_levels == nullptr || omp_set_max_active_levels == nullptr)
     GTEST_SKIP() << "no OpenMP runtime in this process";
   const int before = omp_get_max_active_levels();

@@ -14,8 +14,9 @@
 //      same vertices (positions bit for bit) and faces (count, order,
 //      corners), finite `vt`, positive signed UV area for every face, every
 //      `vt` in [0,1]² (not with --world-units among the uv_unwrap options);
-//   4. overlaps: "border_crossings" of the statistics (recounted by
-//      uv_unwrap on its output) must be 0 (not with --allow-overlaps);
+//   4. overlaps: "border_crossings" and "overlap_area" of the statistics
+//      (measured by uv_unwrap on its output) must be 0 (not with
+//      --allow-overlaps);
 //   5. determinism: meshes up to --repeat-faces faces are unwrapped a second
 //      time, and both OBJ files must be identical byte for byte.
 // Prints one table row per mesh and a summary; exits with 1 if any mesh
@@ -73,9 +74,10 @@ const char* const description =
   "Runs uv_unwrap on every .off, .obj, .ply and .stl file (directories are\n"
   "searched recursively) and checks each result: a documented error or a\n"
   "valid UV map (finite, flip-free, same vertices and faces as the input) that\n"
-  "is a texture atlas: no crossing UV borders (\"border_crossings\": 0 in the\n"
-  "statistics; not checked with --allow-overlaps after --) and every UV in\n"
-  "[0,1] (not checked with --world-units after --).\n"
+  "is a texture atlas: no crossing UV borders and no UV area covered twice\n"
+  "(\"border_crossings\" and \"overlap_area\": 0 in the statistics; not\n"
+  "checked with --allow-overlaps after --) and every UV in [0,1] (not\n"
+  "checked with --world-units after --).\n"
   "Exits with 1 on any crash, hang, NaN, flipped face, overlap, UV outside\n"
   "[0,1] or broken contract. Arguments after -- are passed to uv_unwrap.";
 
@@ -528,6 +530,14 @@ int run(const Options& options)
       if(crossings != "0")
       {
         problem("OVERLAP", crossings + " pairs of UV border segments cross (charts overlap)");
+        print_row(row);
+        continue;
+      }
+      // charts stacked or nested cross no border: the covered area counts them
+      const nlohmann::json overlap = stats.contains("overlap_area") ? stats["overlap_area"] : nlohmann::json();
+      if(!overlap.is_number() || overlap.get<double>() != 0.)
+      {
+        problem("OVERLAP", "UV area covered more than once: " + overlap.dump());
         print_row(row);
         continue;
       }

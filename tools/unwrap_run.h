@@ -1,7 +1,7 @@
 // One unwrapping run as uv_unwrap and the Python module (python/) do it:
 // the options (uv_unwrap_options.h) turned into the library's named
 // parameters, the seam visibility (--hide-seams), the measures taken on
-// the output (flipped faces, border crossings, UVs in the unit square) and
+// the output (flipped faces, border crossings, overlap area, UVs in the unit square) and
 // the statistics that `uv_unwrap --stats` writes and `unwrap()` returns.
 // Both front ends call these, so their results and figures are the same.
 #ifndef CUT_PARAM_TOOLS_UNWRAP_RUN_H
@@ -38,6 +38,7 @@ struct Run_summary
   std::vector<std::string> warnings;  // input repairs and remarks
   std::size_t vertices = 0, faces = 0, flipped_faces = 0;
   std::size_t border_crossings = 0;   // recounted on the output
+  double overlap_area = 0.;           // UV area covered more than once, measured on the output
   bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
   SMP::Cut_and_parameterize_result result;
   double time_seconds = 0.;
@@ -68,6 +69,7 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
   j["initial_distortion"] = number(s.result.initial_distortion);
   j["flipped_faces"] = s.flipped_faces;
   j["border_crossings"] = s.border_crossings;
+  j["overlap_area"] = number(s.overlap_area);
   j["uv_coverage"] = number(s.result.uv_coverage);
   j["uv_scale"] = number(s.result.uv_scale);
   j["uv_in_unit_square"] = s.uv_in_unit_square;
@@ -76,6 +78,7 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
   j["visibility_seconds"] = number(s.visibility_seconds);
   j["newton_iterations"] = s.result.newton_iterations;
   j["factorizations"] = s.result.number_of_factorizations;
+  j["solves"] = s.result.number_of_solves;
   j["timings"] = {{"initialization", number(t.initialization)}, {"u_steps", number(t.u_steps)},
                   {"v_steps", number(t.v_steps)}, {"cut_extraction", number(t.cut_extraction)},
                   {"final_solve", number(t.final_solve)}, {"packing", number(t.packing)},
@@ -149,6 +152,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
   summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
+  summary.overlap_area = SMP::uv_overlap_area(mesh, uvmap);
   summary.uv_in_unit_square = true;
   for(face_descriptor f : faces(mesh))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))

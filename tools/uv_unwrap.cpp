@@ -33,6 +33,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -50,6 +51,18 @@ namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
+
+// Ctrl-C (SIGINT) or SIGTERM: the unwrapping in progress stops at its next
+// progress report (ERROR_CANCELED), nothing more is written, the outputs of
+// the input in progress are removed, and uv_unwrap exits with
+// exit_status_interrupted. A second signal ends the process at once.
+volatile std::sig_atomic_t interrupted = 0;
+constexpr int exit_status_interrupted = 130; // 128 + SIGINT, as shells report it
+void on_interrupt(int signal_number)
+{
+  interrupted = 1;
+  std::signal(signal_number, SIG_DFL);
+}
 
 using Kernel = mesh_input::Kernel;
 using Point_2 = Kernel::Point_2;
@@ -326,9 +339,9 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                  const Mesh_source* source = nullptr)
 {
   // Progress goes to stderr so that stdout keeps the summary only.
-  uv_unwrap::Progress progress;
-  if(!options.quiet)
-    progress = [](const SMP::Cut_and_parameterize_progress& p) {
+  uv_unwrap::Progress progress = [quiet = options.quiet](const SMP::Cut_and_parameterize_progress& p) {
+      if(interrupted) return false; // Ctrl-C: ERROR_CANCELED
+      if(quiet) return true;
       const std::string phase = p.phase;
       std::cerr << "  " << phase << ":";
       if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
@@ -346,6 +359,9 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                          summary);
   for(std::size_t i = warned; i < summary.warnings.size(); ++i)
     std::cerr << "uv_unwrap: warning: " << summary.warnings[i] << std::endl;
+  if(interrupted) // after the library's last report
+    throw Failure(std::string("unwrapping failed: ") + SMP::error_message(SMP::ERROR_CANCELED) + " (ERROR_CANCELED)",
+                  "ERROR_CANCELED");
 }
 
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),
@@ -430,6 +446,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       summary.faces += num_faces(mesh);
       summary.flipped_faces += part.flipped_faces;
       summary.border_crossings += part.border_crossings;
+      summary.overlap_area += part.overlap_area; // each primitive has an atlas of its own
       summary.uv_in_unit_square = summary.uv_in_unit_square && part.uv_in_unit_square;
       summary.time_seconds += part.time_seconds;
       total.number_of_charts += r.number_of_charts;
@@ -467,6 +484,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
     std::cerr << "uv_unwrap: warning: " << w << std::endl;
     summary.warnings.push_back(w);
   }
+  if(interrupted) throw Failure("interrupted", "ERROR_CANCELED");
   try
   {
     gltf_io::save(doc, output);
@@ -479,7 +497,8 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
   if(!options.quiet)
     std::cout << "  " << primitives.size() << " primitives: charts " << total.number_of_charts << ", E_d "
               << total.distortion << ", E_s " << total.seam_length << ", flipped faces " << summary.flipped_faces
-              << ", border crossings " << summary.border_crossings << "\n  wrote " << output << std::endl;
+              << ", border crossings " << summary.border_crossings << ", overlap area " << summary.overlap_area
+              << "\n  wrote " << output << std::endl;
 }
 
 void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
@@ -550,6 +569,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
               << "  distortion E_d " << r.distortion << " (initial " << r.initial_distortion
               << "), flipped faces " << summary.flipped_faces << "\n"
               << "  UV coverage " << 100. * r.uv_coverage << " %, border crossings " << summary.border_crossings
+              << ", overlap area " << summary.overlap_area
               << ", UVs " << (summary.uv_in_unit_square ? "in" : "not in") << " the unit square\n"
               << "  " << summary.time_seconds << " s, " << r.newton_iterations << " Newton iterations\n"
               << (std::isnan(summary.seam_visibility) ? std::string()
@@ -573,6 +593,15 @@ Run_summary unwrap_one(const char* argv0, const Options& options, const std::str
   try
   {
     run(argv0, options, input, summary);
+    if(interrupted) // during the writing: none of this input's files stays
+    {
+      std::error_code ignored;
+      for(const std::string* file : {static_cast<const std::string*>(&summary.output), &options.svg, &options.png, &options.v_field, &options.v_png,
+                                     &options.save_seams_file})
+        if(!file->empty()) fs::remove(*file, ignored);
+      summary.output.clear();
+      throw Failure("interrupted", "ERROR_CANCELED");
+    }
   }
   catch(const Failure& e)
   {
@@ -614,6 +643,8 @@ int main(int argc, char** argv)
   cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
   cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();   // see malloc_settings.h
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   Options options;
   try
   {
@@ -674,6 +705,7 @@ int main(int argc, char** argv)
                 << std::endl;
     }
     if(jsonl) *jsonl << statistics(summary).dump() << std::endl;
+    if(interrupted) break; // the inputs left are not started
   }
   if(jsonl && !*jsonl)
   {
@@ -683,5 +715,6 @@ int main(int argc, char** argv)
   if(inputs.size() > 1 && !options.quiet)
     std::cout << "uv_unwrap: " << inputs.size() - failures << " of " << inputs.size() << " inputs unwrapped"
               << std::endl;
+  if(interrupted) return exit_status_interrupted;
   return std::min(failures, 100);
 }
