@@ -24,8 +24,8 @@
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include "preview/preview.h"
-
-#include <nlohmann/json.hpp>
+#include "printable_text.h"
+#include "run_statistics.h"
 
 #include <algorithm>
 #include <array>
@@ -60,6 +60,9 @@ using face_descriptor = Mesh::Face_index;
 
 using uv_unwrap::Failure;
 using uv_unwrap::Options;
+using cut_tools::printable_text;
+using cut_tools::Run_summary;
+using cut_tools::statistics_text;
 
 // ---------------------------------------------------------------- input
 
@@ -135,77 +138,17 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
   }
   for(const std::string& w : report.warnings)
   {
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     warnings.push_back(w);
   }
 }
 
 // ---------------------------------------------------------------- output
 
-struct Run_summary
-{
-  std::string input;
-  std::string output;                 // empty until written
-  std::string status = "ok";          // "ok", ERROR_USAGE, an input error or a library error name
-  std::string error;                  // one-line message when status is not "ok"
-  std::vector<std::string> warnings;  // input repairs and remarks
-  std::size_t vertices = 0, faces = 0, flipped_faces = 0;
-  std::size_t border_crossings = 0;   // recounted on the output
-  bool uv_in_unit_square = false;     // every corner UV of the output in [0,1]²
-  SMP::Cut_and_parameterize_result result;
-  double time_seconds = 0.;
-  double seam_visibility = std::nan(""); // with --hide-seams or --report-visibility
-  double visibility_seconds = 0.;
-};
-
-// The statistics of one run (documented in the README); numbers that are
-// not finite become null (JSON has no NaN).
-nlohmann::ordered_json statistics(const Run_summary& s)
-{
-  const SMP::Cut_and_parameterize_timings& t = s.result.timings;
-  auto number = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
-  nlohmann::ordered_json j;
-  j["input"] = s.input;
-  j["output"] = s.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.output);
-  j["status"] = s.status;
-  j["error"] = s.status == "ok" ? nlohmann::ordered_json() : nlohmann::ordered_json(s.error);
-  j["warnings"] = s.warnings;
-  j["vertices"] = s.vertices;
-  j["faces"] = s.faces;
-  j["degenerate_faces"] = s.result.number_of_degenerate_faces;
-  j["charts"] = s.result.number_of_charts;
-  j["seam_edges"] = s.result.number_of_seam_edges;
-  j["seam_length"] = number(s.result.seam_length);
-  j["distortion"] = number(s.result.distortion);
-  j["distortion_bound_met"] = s.result.distortion_bound_met;
-  j["initial_distortion"] = number(s.result.initial_distortion);
-  j["flipped_faces"] = s.flipped_faces;
-  j["border_crossings"] = s.border_crossings;
-  j["uv_coverage"] = number(s.result.uv_coverage);
-  j["uv_scale"] = number(s.result.uv_scale);
-  j["uv_in_unit_square"] = s.uv_in_unit_square;
-  j["time_seconds"] = number(s.time_seconds);
-  j["seam_visibility"] = number(s.seam_visibility);
-  j["visibility_seconds"] = number(s.visibility_seconds);
-  j["newton_iterations"] = s.result.newton_iterations;
-  j["factorizations"] = s.result.number_of_factorizations;
-  j["timings"] = {{"initialization", number(t.initialization)}, {"u_steps", number(t.u_steps)},
-                  {"v_steps", number(t.v_steps)}, {"cut_extraction", number(t.cut_extraction)},
-                  {"final_solve", number(t.final_solve)}, {"packing", number(t.packing)},
-                  {"total", number(t.total)}};
-  if(s.status != "ok") // nothing was measured: no figure rather than zeros
-    for(auto& [key, value] : j.items())
-      if(value.is_number() || value.is_boolean() || value.is_object())
-        if(key != "vertices" && key != "faces") value = nullptr;
-  return j;
-}
-
 void write_stats(const std::string& filename, const Run_summary& s)
 {
-  std::ofstream out(filename);
-  out << statistics(s).dump(2) << '\n';
-  out.close();
-  if(!out) throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
+  if(!cut_tools::write_statistics(filename, s))
+    throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
 }
 
 template <typename SeamMap, typename UVMap, typename VMap>
@@ -296,7 +239,7 @@ void write_output(const std::string& output, const std::string& format, const st
     if(!written)
     {
       const std::string w = "the input's normals, groups and materials are not kept: " + problem;
-      std::cerr << "uv_unwrap: warning: " << w << std::endl;
+      std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
       warnings.push_back(w);
     }
   }
@@ -304,7 +247,7 @@ void write_output(const std::string& output, const std::string& format, const st
   {
     const std::string w = "the input was repaired: the output has the repaired mesh's numbering, without the "
                           "input's normals, groups and materials";
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     warnings.push_back(w);
   }
   if(!written && format == "obj") written = SMP::write_OBJ_with_uvs(output, mesh, uvmap);
@@ -437,7 +380,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   {
     const std::string w = "E_d " + std::to_string(summary.result.distortion) + " is above --max-distortion " +
                           std::to_string(options.max_distortion) + ": no seam cost tried reached it (lowest E_d kept)";
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     summary.warnings.push_back(w);
   }
   if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
@@ -509,7 +452,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       Run_summary part;
       part.input = name;
       if(!options.quiet)
-        std::cout << "uv_unwrap: " << input << ", " << name << ": " << num_vertices(mesh) << " vertices, "
+        std::cout << "uv_unwrap: " << printable_text(input) << ", " << printable_text(name) << ": " << num_vertices(mesh) << " vertices, "
                   << num_faces(mesh) << " faces" << std::endl;
       unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
 
@@ -569,7 +512,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
     summary.seam_visibility = seam_length > 0. ? seen / seam_length : 0.;
   for(const std::string& w : doc.warnings)
   {
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     summary.warnings.push_back(w);
   }
   try
@@ -627,7 +570,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);
   if(!options.quiet)
-    std::cout << "uv_unwrap: " << summary.input << ": " << summary.vertices << " vertices, "
+    std::cout << "uv_unwrap: " << printable_text(summary.input) << ": " << summary.vertices << " vertices, "
               << summary.faces << " faces" << std::endl;
 
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
@@ -660,10 +603,10 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
               << (std::isnan(summary.seam_visibility) ? std::string()
                   : "  seam visibility " + std::to_string(summary.seam_visibility) + " (visibility " +
                     std::to_string(summary.visibility_seconds) + " s)\n")
-              << "  wrote " << output;
+              << "  wrote " << printable_text(output);
     for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field, &options.v_png,
                                    &options.save_seams_file})
-      if(!file->empty()) std::cout << ", " << *file;
+      if(!file->empty()) std::cout << ", " << printable_text(*file);
     std::cout << std::endl;
   }
 }
@@ -733,7 +676,7 @@ int main(int argc, char** argv)
   }
   catch(const Failure& e)
   {
-    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+    std::cerr << "uv_unwrap: error: " << printable_text(e.what()) << std::endl;
     return EXIT_FAILURE;
   }
 
@@ -746,7 +689,7 @@ int main(int argc, char** argv)
     jsonl_file.open(options.jsonl);
     if(!jsonl_file)
     {
-      std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+      std::cerr << "uv_unwrap: error: cannot write '" << printable_text(options.jsonl) << "'" << std::endl;
       return EXIT_FAILURE;
     }
     jsonl = &jsonl_file;
@@ -775,14 +718,14 @@ int main(int argc, char** argv)
     {
       ++failures;
       const bool named = inputs.size() == 1 || summary.error.find(summary.input) != std::string::npos;
-      std::cerr << "uv_unwrap: error: " << (named ? std::string() : summary.input + ": ") << summary.error
+      std::cerr << "uv_unwrap: error: " << printable_text((named ? std::string() : summary.input + ": ") + summary.error)
                 << std::endl;
     }
-    if(jsonl) *jsonl << statistics(summary).dump() << std::endl;
+    if(jsonl) *jsonl << statistics_text(summary) << std::endl;
   }
   if(jsonl && !*jsonl)
   {
-    std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+    std::cerr << "uv_unwrap: error: cannot write '" << printable_text(options.jsonl) << "'" << std::endl;
     ++failures;
   }
   if(inputs.size() > 1 && !options.quiet)
