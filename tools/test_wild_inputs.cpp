@@ -20,6 +20,8 @@
 #include <fstream>
 #include <string>
 
+#include <sys/wait.h>
+
 namespace {
 
 namespace fs = std::filesystem;
