@@ -358,9 +358,9 @@ def main():
             r = run(args, mesh_file, name)
             rows.append(r)
             print(line(r), flush=True)
+            if args.json:  # after each run, so that an interrupted run keeps its rows
+                json.dump(rows, open(args.json, 'w'), indent=1)
             os.remove(mesh_file)
-    if args.json:
-        json.dump(rows, open(args.json, 'w'), indent=1)
     ok = [r for r in rows if r.get('status') == 'ok']
     bad = [r for r in rows if r.get('status') != 'ok' or r.get('flips') or r.get('crossings') or not r.get('unit')]
     print('\n%d runs: %d ok, %d not a valid atlas or failed; E_d above 4.6: %d; above 30 s: %d' % (
