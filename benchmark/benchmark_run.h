@@ -42,6 +42,8 @@ struct Run_result
   bool ok = false;
   double time = NaN;           // median wall time of the algorithm (s)
   std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
+  std::size_t factorizations = 0, solves = 0; // of the inner solver (every phase)
+  std::size_t u_factorizations = 0, u_solves = 0, v_factorizations = 0; // of the alternation's u- and v-steps
   double distortion = NaN, seam_length = NaN, coverage = NaN;
   bool bound_met = true;       // distortion_bound_met (true without a bound)
   std::string note;
@@ -71,7 +73,7 @@ inline double box_stiffness(const Options& opt)
 }
 
 /// The named parameters of --lambda, --passes, --box, --box-stiffness,
-/// --multiresolution-faces and --allow-overlaps (the library's default for
+/// --multiresolution-faces, --allow-overlaps and --inner-solver (the library's default for
 /// those not given), with `distortion_bound` (0: none).
 inline auto method_parameters(const Options& opt, double distortion_bound)
 {
@@ -87,7 +89,8 @@ inline auto method_parameters(const Options& opt, double distortion_bound)
          P::bounding_box_distortion_budget(budget,
          P::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces),
          P::global_injectivity(!opt.allow_overlaps,
-         P::distortion_bound(distortion_bound))))))));
+         P::inner_solver(opt.inner_solver,
+         P::distortion_bound(distortion_bound)))))))));
 }
 
 /// "lambda X, passes N, box aspect ratio R stiffness S[, overlaps allowed]; time:
@@ -99,6 +102,7 @@ inline std::string parameters_text(const Options& opt)
      << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
      << ", box aspect ratio " << fixed(opt.box.value_or(library_defaults().bounding_box_aspect_ratio), 3)
      << " stiffness " << fixed(box_stiffness(opt), 1) << (opt.allow_overlaps ? ", overlaps allowed" : "")
+     << (opt.inner_solver == SMP::Inner_solver::NEWTON ? "" : ", inner solver proxy quasi-Newton")
      << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "");
   return os.str();
 }
@@ -143,6 +147,11 @@ void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& o
   if(!out.ok) return;
 
   out.newton = first.newton_iterations;
+  out.factorizations = first.number_of_factorizations;
+  out.solves = first.number_of_solves;
+  out.u_factorizations = first.alternation_factorizations;
+  out.u_solves = first.alternation_solves;
+  out.v_factorizations = first.v_step_factorizations;
   out.charts = first.number_of_charts;
   out.distortion = first.distortion;
   out.seam_length = first.seam_length;

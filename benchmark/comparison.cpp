@@ -130,7 +130,7 @@ int run_comparison(const Options& opt)
 
   // Table.
   const std::vector<Column> columns = {
-    {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"charts"}, {"flips"}, {"crossings"}, {"coverage"},
+    {"mesh", true}, {"faces"}, {"time_s"}, {"newton"}, {"fact_u+rest"}, {"solves_u+rest"}, {"fact_v"}, {"charts"}, {"flips"}, {"crossings"}, {"coverage"},
     {"E_d"}, {"E_s"},
     {"ref_t"}, {"ref_E_d"}, {"ref_E_s"}, {"T1_t"}, {"T1_E_d"}, {"T1_E_s"},
     {"E_d_ok"}, {"E_s_ok"}, {"speedup"}, {"base_E_d"}, {"base_E_s"}, {"front_E_s"}, {"vs_base"}, {"status", true}};
@@ -145,6 +145,9 @@ int run_comparison(const Options& opt)
       r.faces ? std::to_string(r.faces) : "-",
       r.ran ? time_text(r.time) : "-",
       r.ok ? std::to_string(r.newton) : "-",
+      r.ok ? std::to_string(r.u_factorizations) + "+" + std::to_string(r.factorizations - r.u_factorizations) : "-",
+      r.ok ? std::to_string(r.u_solves) + "+" + std::to_string(r.solves - r.u_solves) : "-",
+      r.ok ? std::to_string(r.v_factorizations) : "-",
       r.ok ? std::to_string(r.charts) : "-",
       r.ok ? std::to_string(r.flipped) : "-",
       r.ok ? std::to_string(r.crossings) : "-",
@@ -196,6 +199,8 @@ int run_comparison(const Options& opt)
   }
   std::cout << "\nE_d_ok: E_d <= ref_E_d + " << ED_TOLERANCE << "; E_s_ok: E_s <= " << ES_FACTOR
             << " ref_E_s + " << ES_TOLERANCE << "; speedup = ref_t / time_s\n"
+            << "newton: inner-solver iterations; fact_u+rest, solves_u+rest: Cholesky factorizations and solves with\n"
+            << "  them, in the alternation's u-steps + in the rest (final solves, split and zip trials); fact_v: v-steps\n"
             << "base_*: the baseline run (" << (opt.baseline_file.empty() ? std::string("none") : opt.baseline_file.lexically_normal().string())
             << "); vs_base: yes if E_d <= base_E_d + " << BASELINE_ED_TOLERANCE << " and E_s <= base_E_s, "
             << "front if E_s <= front_E_s only\n"
@@ -249,7 +254,8 @@ int run_comparison(const Options& opt)
     if(!csv) { std::cerr << "error: cannot write " << opt.csv_file << "\n"; return 1; }
     csv << "mesh,file,faces,time_s,newton_iterations,charts,flipped_faces,crossings,coverage,E_d,E_s,"
            "ref_time_s,ref_E_d,ref_E_s,paper_time_s,paper_E_d,paper_E_s,"
-           "E_d_pass,E_s_pass,speedup,baseline_E_d,baseline_E_s,baseline_pass,frontier_E_s,frontier_pass,status\n";
+           "E_d_pass,E_s_pass,speedup,baseline_E_d,baseline_E_s,baseline_pass,frontier_E_s,frontier_pass,status,"
+           "factorizations,solves,u_step_factorizations,u_step_solves,v_step_factorizations\n";
     for(const auto& row : rows)
     {
       const auto& r = row.run;
@@ -274,7 +280,10 @@ int run_comparison(const Options& opt)
           << (row.baseline ? full(row.baseline->distortion) : "") << ","
           << (row.baseline ? full(row.baseline->seam_length) : "") << ","
           << pass_csv(row.baseline_pass) << "," << full(row.frontier_seam) << ","
-          << pass_csv(row.frontier_pass) << "," << csv_field(r.status) << "\n";
+          << pass_csv(row.frontier_pass) << "," << csv_field(r.status) << ","
+          << (r.ok ? std::to_string(r.factorizations) : "") << "," << (r.ok ? std::to_string(r.solves) : "") << ","
+          << (r.ok ? std::to_string(r.u_factorizations) : "") << "," << (r.ok ? std::to_string(r.u_solves) : "") << ","
+          << (r.ok ? std::to_string(r.v_factorizations) : "") << "\n";
     }
     std::cerr << "wrote " << opt.csv_file << "\n";
   }

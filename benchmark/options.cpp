@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <map>
 #include <iostream>
 #include <sstream>
 
@@ -106,6 +107,13 @@ int parse_options(int argc, char** argv, Options& opt)
                  "cuts decided on a copy simplified to N faces for meshes\n"
                  "of more than 2N (0: full resolution; library default if not given)")
     ->type_name("N")->check(CLI::NonNegativeNumber);
+  app.add_option("--inner-solver", opt.inner_solver,
+                 "inner solver of the UV minimizations: newton (default) or quasi-newton\n"
+                 "(the Hessian factorized at a few iterates, L-BFGS between them)")
+    ->transform(CLI::CheckedTransformer(std::map<std::string, CGAL::Surface_mesh_parameterization::Inner_solver>{
+        {"newton", CGAL::Surface_mesh_parameterization::Inner_solver::NEWTON},
+        {"quasi-newton", CGAL::Surface_mesh_parameterization::Inner_solver::PROXY_QUASI_NEWTON}}))
+    ->type_name("NAME");
   comparisons.push_back(
     app.add_flag("--allow-overlaps", opt.allow_overlaps,
                  "global_injectivity(false): no border barrier (with --box-stiffness 0, the\n"

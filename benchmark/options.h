@@ -4,6 +4,8 @@
 #ifndef CUT_PARAM_BENCHMARK_OPTIONS_H
 #define CUT_PARAM_BENCHMARK_OPTIONS_H
 
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -41,6 +43,8 @@ struct Options
   std::optional<double> box_stiffness; // bounding_box_stiffness (empty: the library's default)
   bool allow_overlaps = false;         // global_injectivity(false)
   std::optional<int> multiresolution_faces; // multiresolution_faces (empty: the library's default)
+  // inner_solver: a solver, not a method option (the baseline comparisons stay)
+  CGAL::Surface_mesh_parameterization::Inner_solver inner_solver = CGAL::Surface_mesh_parameterization::Inner_solver::NEWTON;
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;

@@ -99,3 +99,14 @@ for stem in lion_head_visible lion_head_hidden; do
 done
 
 ls -l "$fig"
+
+# The Blender add-on's result (README, "Blender add-on"): rendered headless
+# by Blender itself, where it is installed, from the add-on's zip.
+zip="$build/blender/uv_unwrap_seams.zip"
+if command -v blender >/dev/null 2>&1 && [ -f "$zip" ]; then
+  BLENDER_USER_SCRIPTS="$work/blender/scripts" BLENDER_USER_CONFIG="$work/blender/config" \
+    blender -b --factory-startup --python "$root/doc/render_blender_addon.py" -- \
+    "$zip" "$meshes/lion-head.off" "$fig/blender_addon_lion_head.png" y -0.8 >/dev/null
+else
+  echo "make_figures: no blender or no $zip: blender_addon_lion_head.png not made" >&2
+fi

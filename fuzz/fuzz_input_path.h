@@ -15,7 +15,7 @@
 //   - when it returns OK: every corner UV is finite, no UV triangle has a
 //     non-positive signed area, and the OBJ writer writes every vertex and
 //     face;
-//   - the statistics writer of uv_unwrap (run_statistics.h) turns every
+//   - the statistics writer of uv_unwrap (unwrap_run.h) turns every
 //     outcome into JSON that parses back, whatever bytes the file, its
 //     messages and its name hold (the input's first bytes serve as a file
 //     name), with the error and warnings as printable_text() makes them.
@@ -23,7 +23,7 @@
 #define UV_TOOLS_FUZZ_INPUT_PATH_H
 
 #include "mesh_input.h"
-#include "run_statistics.h"
+#include "unwrap_run.h"
 
 #include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
@@ -107,14 +107,14 @@ inline CGAL::Surface_mesh_parameterization::Cut_and_parameterize_result unwrap_a
 
 /// The statistics of `summary` dumped as uv_unwrap dumps them, parsed back
 /// and compared with the summary's text fields.
-inline void check_statistics(const cut_tools::Run_summary& summary)
+inline void check_statistics(const uv_unwrap::Run_summary& summary)
 {
   for(int indent : {-1, 2})
   {
     std::string text;
     try
     {
-      text = cut_tools::statistics_text(summary, indent);
+      text = uv_unwrap::statistics_text(summary, indent);
     }
     catch(const std::exception& e)
     {
@@ -144,7 +144,7 @@ inline void run(const std::uint8_t* data, std::size_t size, const std::string& s
 
   mesh_input::Mesh mesh;
   mesh_input::Input_report report;
-  cut_tools::Run_summary summary;
+  uv_unwrap::Run_summary summary;
   summary.input = std::string(reinterpret_cast<const char*>(data + 1), std::min<std::size_t>(size - 1, 64)) + "." +
                   extension_of(data[0]); // any bytes, as a file name may hold
   bool accepted = false;

@@ -12,9 +12,10 @@
 # stay within its time) also the tools' test programs and check_all_meshes
 # (uv_unwrap on the small meshes of the data set and ../shared/meshes):
 # measured on 2 cores, they add about 7 minutes (1403 s against 995).
-# Neither the benchmark nor the examples are built (the examples unwrap
-# whole data meshes: about 9 minutes under the sanitizers for nothing the
-# tests do not cover). Suppressions for third-party reports, if any are
+# Neither the Python module (an instrumented module cannot load into an
+# uninstrumented python3), the Blender add-on, the benchmark nor the
+# examples are built (the examples unwrap whole data meshes: about 9
+# minutes under the sanitizers for nothing the tests do not cover). Suppressions for third-party reports, if any are
 # ever needed, go to scripts/sanitizers/ (lsan.supp, ubsan.supp).
 set -euo pipefail
 
@@ -51,6 +52,7 @@ flags="-fsanitize=address,undefined -fno-omit-frame-pointer -O1"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
   -DCUT_PARAM_UNITY_TESTS=ON \
   -DCUT_PARAM_BUILD_BENCHMARK=OFF -DCUT_PARAM_BUILD_EXAMPLES=OFF -DCUT_PARAM_BUILD_TOOL_TESTS="$tool_tests" \
+  -DCUT_PARAM_BUILD_PYTHON=OFF \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags"
 cmake --build "$build" -j "$jobs"
 

@@ -19,7 +19,7 @@ Needs python3 with numpy (Debian: /usr/bin/python3 with python3-numpy).
 
   /usr/bin/python3 scripts/wild_corpus.py [--meshes DIR...] [--damage holes,dup,...]
       [--max-faces N] [--timeout S] [--work DIR] [--uv-unwrap EXE] [--metrics uv_metrics.py]
-      [--filter SUBSTRING] [--skip NAME,...] [--every K]
+      [--filter SUBSTRING] [--skip NAME,...] [--after NAME] [--every K]
 
 Defaults: build/data/meshes (CGAL's data set, extracted by the build) and ../shared/meshes,
 build/bin/uv_unwrap, ../shared/tools/uv_metrics.py, build/wild_corpus, all damages, meshes
@@ -321,6 +321,7 @@ def main():
     ap.add_argument('--metrics', default=os.path.join(ROOT, '..', 'shared', 'tools', 'uv_metrics.py'))
     ap.add_argument('--filter', default='')
     ap.add_argument('--skip', default='', help='comma-separated mesh names left out')
+    ap.add_argument('--after', default='', help='only the meshes whose name sorts after this (to resume a run)')
     ap.add_argument('--every', type=int, default=1, help='every K-th mesh only (a quicker sample)')
     ap.add_argument('--json', default='', help='also write the rows to this file')
     args = ap.parse_args()
@@ -334,6 +335,7 @@ def main():
     skip = set(n for n in args.skip.split(',') if n)
     files = sorted(f for f in files if args.filter in os.path.basename(f)
                    and os.path.splitext(os.path.basename(f))[0] not in skip)[::args.every]
+    files = [f for f in files if os.path.splitext(os.path.basename(f))[0].lower() > args.after.lower()]
     damages = [d for d in args.damage.split(',') if d]
     rows = []
     print(HEADER, flush=True)

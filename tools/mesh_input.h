@@ -112,6 +112,13 @@ std::string lower_extension(const std::string& filename);
 /// Throws Input_error; fills `report` (warnings included) otherwise.
 void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& report);
 
+/// The same validation and repair, on a polygon soup given in memory (the
+/// Python module's arrays): `points` and `polygons` (indices into `points`,
+/// each checked to be in range by the caller); `name` starts the messages
+/// (e.g. "'mesh.off'"). Throws Input_error; fills `report` otherwise.
+void mesh_from_polygon_soup(const std::vector<File_point>& points, std::vector<std::vector<std::size_t>> polygons,
+                            const std::string& name, Mesh& mesh, Input_report& report);
+
 } // namespace mesh_input
 
 #endif

@@ -10,6 +10,7 @@
 #include "mesh_input.h"
 #include "mesh_output.h"
 #include "seam_constraints.h"
+#include "unwrap_run.h"
 #include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh.h>
@@ -25,7 +26,6 @@
 
 #include "preview/preview.h"
 #include "printable_text.h"
-#include "run_statistics.h"
 
 #include <algorithm>
 #include <array>
@@ -61,8 +61,8 @@ using face_descriptor = Mesh::Face_index;
 using uv_unwrap::Failure;
 using uv_unwrap::Options;
 using cut_tools::printable_text;
-using cut_tools::Run_summary;
-using cut_tools::statistics_text;
+using uv_unwrap::Run_summary;
+using uv_unwrap::statistics_text;
 
 // ---------------------------------------------------------------- input
 
@@ -147,7 +147,10 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
 
 void write_stats(const std::string& filename, const Run_summary& s)
 {
-  if(!cut_tools::write_statistics(filename, s))
+  std::ofstream out(filename);
+  out << statistics_text(s, 2) << '\n';
+  out.close();
+  if(!out)
     throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
 }
 
@@ -314,17 +317,18 @@ void read_constraints(const Options& options, const Mesh& mesh, const Mesh_sourc
   }
 }
 
-// cut_and_parameterize() with the options; fills the summary's result and
-// the counts measured on the output. Throws Failure if the library fails.
-// `source`: the file the mesh comes from (null for glTF primitives and the
-// built-in mesh), for the constraints given in its numbering.
+// cut_and_parameterize() with the options (tools/unwrap_run.h), progress
+// and warnings on stderr. `source`: the file the mesh comes from (null for
+// glTF primitives and the built-in mesh), for the constraints given in its
+// numbering.
 template <typename SeamMap, typename UVMap, typename VMap>
 void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field, Run_summary& summary,
                  const Mesh_source* source = nullptr)
 {
   // Progress goes to stderr so that stdout keeps the summary only.
-  std::function<bool(const SMP::Cut_and_parameterize_progress&)> progress =
-    [](const SMP::Cut_and_parameterize_progress& p) {
+  uv_unwrap::Progress progress;
+  if(!options.quiet)
+    progress = [](const SMP::Cut_and_parameterize_progress& p) {
       const std::string phase = p.phase;
       std::cerr << "  " << phase << ":";
       if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
@@ -334,66 +338,14 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
       std::cerr << " E_d " << p.distortion << std::endl;
       return true;
     };
-
-  // visibility: to steer the seams (--hide-seams) or to report where they lie
-  auto visibility = mesh.add_property_map<face_descriptor, double>("f:visibility", 1.).first;
-  auto face_lambda = mesh.add_property_map<face_descriptor, double>("f:lambda", 1.).first;
-  const bool visibility_wanted = options.hide_seams > 0. || options.report_visibility;
-  if(visibility_wanted)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    const SMP::Error_code status = SMP::face_visibility(mesh, visibility);
-    if(status != SMP::OK)
-      throw Failure(std::string("visibility failed: ") + SMP::error_message(status), SMP::error_name(status));
-    if(options.hide_seams > 0.) SMP::visibility_face_lambda(mesh, visibility, face_lambda, options.hide_seams);
-    summary.visibility_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  auto forbidden = mesh.add_property_map<edge_descriptor, bool>("e:forbidden", false).first;
-  read_constraints(options, mesh, source, seams, forbidden, face_lambda);
-
-  namespace P = SMP::parameters;
-  const auto np = P::lambda(options.lambda,
-                  P::face_lambda_map(face_lambda,
-                  P::forbidden_seam_edge_map(forbidden,
-                  P::epsilon_start(options.epsilon_start,
-                  P::epsilon_end(options.epsilon_end,
-                  P::iterations_per_epsilon(options.iterations,
-                  P::number_of_passes(options.passes,
-                  P::distortion_bound(options.max_distortion,
-                  P::global_injectivity(!options.allow_overlaps,
-                  P::world_units(options.world_units,
-                  P::texture_size(options.texture_size,
-                  P::padding(options.padding,
-                  P::bounding_box_aspect_ratio(options.box_aspect_ratio,
-                  P::bounding_box_stiffness(options.box_stiffness,
-                  P::bounding_box_distortion_budget(options.box_distortion_budget,
-                  P::face_discontinuity_map(v_field,
-                  P::progress_callback(options.quiet ? decltype(progress)() : progress)))))))))))))))));
-
-  const auto start = std::chrono::steady_clock::now();
-  summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
-  summary.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if(!summary.result.ok())
-    throw Failure(std::string("unwrapping failed: ") + SMP::error_message(summary.result.error) + " (" +
-                  SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
-  if(!summary.result.distortion_bound_met)
-  {
-    const std::string w = "E_d " + std::to_string(summary.result.distortion) + " is above --max-distortion " +
-                          std::to_string(options.max_distortion) + ": no seam cost tried reached it (lowest E_d kept)";
-    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
-    summary.warnings.push_back(w);
-  }
-  if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
-  summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);
-  summary.border_crossings = SMP::number_of_border_crossings(mesh, uvmap);
-  summary.uv_in_unit_square = true;
-  for(face_descriptor f : faces(mesh))
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      const Point_2& uv = uvmap[h];
-      if(!(uv.x() >= 0. && uv.x() <= 1. && uv.y() >= 0. && uv.y() <= 1.)) summary.uv_in_unit_square = false;
-    }
-
+  const std::size_t warned = summary.warnings.size();
+  uv_unwrap::unwrap_mesh(options, mesh, seams, uvmap, v_field, progress,
+                         [&](auto forbidden, auto face_lambda) {
+                           read_constraints(options, mesh, source, seams, forbidden, face_lambda);
+                         },
+                         summary);
+  for(std::size_t i = warned; i < summary.warnings.size(); ++i)
+    std::cerr << "uv_unwrap: warning: " << printable_text(summary.warnings[i]) << std::endl;
 }
 
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),

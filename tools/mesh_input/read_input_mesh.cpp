@@ -27,10 +27,10 @@ std::string format_point(const File_point& p)
 }
 
 // The soup repair: `points` and `polygons` (not a polygon mesh: `problem`
-// says why) repaired, oriented and built into `mesh`, whose non-manifold
+// says why; `name`: the input, quoted, for messages) repaired, oriented and built into `mesh`, whose non-manifold
 // vertices are then duplicated; `file_points` are the points of the file, for
 // report.point_vertex. Throws Input_error where nothing can be built.
-void repair_as_soup(const std::string& filename, const std::vector<Point_3>& file_points, std::vector<Point_3>& points,
+void repair_as_soup(const std::string& name, const std::vector<Point_3>& file_points, std::vector<Point_3>& points,
                     std::vector<detail::Polygon>& polygons, const std::string& problem, Mesh& mesh,
                     Input_report& report)
 {
@@ -39,11 +39,9 @@ void repair_as_soup(const std::string& filename, const std::vector<Point_3>& fil
   PMP::repair_polygon_soup(points, polygons);
   PMP::orient_polygon_soup(points, polygons);
   if(polygons.empty())
-    detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + ": no valid face left after repairing (" +
-                                     problem + ")");
+    detail::fail("ERROR_EMPTY_MESH", name + ": no valid face left after repairing (" + problem + ")");
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    detail::fail("ERROR_NON_MANIFOLD", detail::quoted(filename) + " is not manifold (" + problem +
-                                       ") and could not be repaired");
+    detail::fail("ERROR_NON_MANIFOLD", name + " is not manifold (" + problem + ") and could not be repaired");
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
   std::map<Point_3, long> vertex_at;
@@ -99,35 +97,39 @@ std::string lower_extension(const std::string& filename)
 /// Throws Input_error; fills `report` (warnings included) otherwise.
 void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& report)
 {
+  std::vector<File_point> file_points;
+  std::vector<std::vector<std::size_t>> polygons;
+  detail::read_soup(filename, file_points, polygons);
+  mesh_from_polygon_soup(file_points, std::move(polygons), detail::quoted(filename), mesh, report);
+}
+
+void mesh_from_polygon_soup(const std::vector<File_point>& file_points, std::vector<std::vector<std::size_t>> polygons,
+                            const std::string& name, Mesh& mesh, Input_report& report)
+{
   namespace PMP = CGAL::Polygon_mesh_processing;
   mesh.clear();
   report = Input_report();
 
   std::vector<Point_3> points;
-  std::vector<detail::Polygon> polygons;
+  for(std::size_t v = 0; v < file_points.size(); ++v)
   {
-    std::vector<File_point> file_points;
-    detail::read_soup(filename, file_points, polygons);
-    for(std::size_t v = 0; v < file_points.size(); ++v)
-    {
-      const File_point& p = file_points[v];
-      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-        detail::fail("ERROR_NON_FINITE_COORDINATE", detail::quoted(filename) + ": vertex " + std::to_string(v) +
-                                                    " has a non-finite coordinate " + format_point(p));
-    }
-    points.reserve(file_points.size());
-    for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());
+    const File_point& p = file_points[v];
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      detail::fail("ERROR_NON_FINITE_COORDINATE", name + ": vertex " + std::to_string(v) +
+                                                  " has a non-finite coordinate " + format_point(p));
   }
+  points.reserve(file_points.size());
+  for(const File_point& p : file_points) points.emplace_back(p.x(), p.y(), p.z());
   report.file_vertices = points.size();
   report.file_faces = polygons.size();
-  if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", detail::quoted(filename) + " has no faces");
+  if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", name + " has no faces");
 
   const std::vector<Point_3> file_points_kept = points; // the repairs renumber `points`
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
     std::string problem = detail::describe_soup_problem(polygons, points.size());
     if(problem.empty()) problem = "not a polygon mesh";
-    repair_as_soup(filename, file_points_kept, points, polygons, problem, mesh, report);
+    repair_as_soup(name, file_points_kept, points, polygons, problem, mesh, report);
   }
   else
   {
@@ -159,7 +161,7 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
         report.face_origin.resize(num_faces(mesh), report.face_origin[std::size_t(f)]);
     }
     if(!CGAL::is_triangle_mesh(mesh) || !mesh.is_valid(false))
-      detail::fail("ERROR_NON_TRIANGULAR_MESH", detail::quoted(filename) + ": face " +
+      detail::fail("ERROR_NON_TRIANGULAR_MESH", name + ": face " +
                                                 std::to_string(first_polygon) + " could not be triangulated");
     report.triangulated_faces = polygons_to_split.size();
     report.warnings.push_back(
@@ -182,7 +184,7 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
     std::vector<Point_3> soup_points;
     std::vector<detail::Polygon> soup_polygons;
     PMP::polygon_mesh_to_polygon_soup(mesh, soup_points, soup_polygons);
-    repair_as_soup(filename, file_points_kept, soup_points, soup_polygons, problem, mesh, report);
+    repair_as_soup(name, file_points_kept, soup_points, soup_polygons, problem, mesh, report);
   }
 
   std::size_t first_isolated = 0;

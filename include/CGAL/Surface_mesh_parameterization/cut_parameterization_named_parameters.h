@@ -14,6 +14,20 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
+/// \ingroup PkgCutParameterizationRef
+/// The inner solver of every minimization of the UVs (the alternation's
+/// u-steps, the final solve, the trials of splits and zips): named parameter
+/// `inner_solver`.
+enum class Inner_solver
+{
+  /// projected Newton: one factorization of the projected Hessian per iteration
+  NEWTON,
+  /// the projected Hessian factorized at a few iterates only, with L-BFGS
+  /// updates on top of the last factorization in between: fewer
+  /// factorizations (about half), more iterations (2-4 times)
+  PROXY_QUASI_NEWTON
+};
+
 #define CGAL_SMP_CUT_NAMED_PARAMETER(TAG, NAME)                                          \
   namespace internal_np { enum TAG { NAME }; }                                   \
   namespace parameters {                                                                 \
@@ -63,6 +77,8 @@ CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut
 /// true: refuse degenerate faces with ERROR_DEGENERATE_FACE instead of clamping them (default false).
 CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
 CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
+/// Inner solver of the distortion minimizations (`Inner_solver`, default `Inner_solver::NEWTON`).
+CGAL_SMP_CUT_NAMED_PARAMETER(inner_solver_t, inner_solver)
 
 /// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a border barrier (bool, default true).
 CGAL_SMP_CUT_NAMED_PARAMETER(global_injectivity_t, global_injectivity)

@@ -436,32 +436,15 @@ public:
     return energy;
   }
 
-  /// Per pair closer than ε: the gradient b'(d) g and the Hessian
-  /// approximation b''(d) g g^T (positive semi-definite), g being the
-  /// gradient of d over the pair's three vertices; for a pair not in the
-  /// pattern, the 2x2 diagonal blocks of that matrix.
+  void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override
+  {
+    accumulate(x, gradient, nullptr);
+  }
+
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
   {
-    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
-      double b, db, ddb;
-      barrier(d, epsilon, b, db, ddb);
-      Eigen::Matrix<double, 6, 1> g;
-      g << n, -(1. - s) * n, -s * n;
-      const int ids[3] = {v, segments_[j][0], segments_[j][1]};
-      for(int c = 0; c < 3; ++c)
-      {
-        gradient[2*ids[c]] += db * g[2*c];
-        gradient[2*ids[c]+1] += db * g[2*c+1];
-      }
-      const Eigen::Matrix<double, 6, 6> block = ddb * g * g.transpose();
-      const auto it = pair_of_.find(directed_edge_key(v, j));
-      if(it != pair_of_.end())
-        hessian.add(elements_[it->second], block);
-      else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
-        for(int c = 0; c < 3; ++c)
-          hessian.add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));
-    });
+    accumulate(x, gradient, &hessian);
   }
 
   double max_step(const UV_vector& x, const UV_vector& dx) const override
@@ -474,6 +457,36 @@ public:
                                            point(x, s[1]), point(dx, s[1])));
     });
     return t;
+  }
+
+private:
+  /// Per pair closer than ε: the gradient b'(d) g and, where `hessian` is
+  /// not null, the Hessian approximation b''(d) g g^T (positive
+  /// semi-definite), g being the gradient of d over the pair's three
+  /// vertices; for a pair not in the pattern, the 2x2 diagonal blocks of
+  /// that matrix.
+  void accumulate(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler* hessian) const
+  {
+    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
+      double b, db, ddb;
+      barrier(d, epsilon, b, db, ddb);
+      Eigen::Matrix<double, 6, 1> g;
+      g << n, -(1. - s) * n, -s * n;
+      const int ids[3] = {v, segments_[j][0], segments_[j][1]};
+      for(int c = 0; c < 3; ++c)
+      {
+        gradient[2*ids[c]] += db * g[2*c];
+        gradient[2*ids[c]+1] += db * g[2*c+1];
+      }
+      if(hessian == nullptr) return;
+      const Eigen::Matrix<double, 6, 6> block = ddb * g * g.transpose();
+      const auto it = pair_of_.find(directed_edge_key(v, j));
+      if(it != pair_of_.end())
+        hessian->add(elements_[it->second], block);
+      else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
+        for(int c = 0; c < 3; ++c)
+          hessian->add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));
+    });
   }
 };
 

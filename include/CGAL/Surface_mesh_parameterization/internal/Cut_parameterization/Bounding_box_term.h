@@ -127,8 +127,20 @@ public:
     return energy;
   }
 
+  void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override
+  {
+    accumulate(x, gradient, nullptr);
+  }
+
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
+  {
+    accumulate(x, gradient, &hessian);
+  }
+
+private:
+  /// The gradient, and the Hessian where `hessian` is not null.
+  void accumulate(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler* hessian) const
   {
     for(std::size_t i = 0; i < vertices_.size(); ++i)
     {
@@ -144,12 +156,10 @@ public:
         h_local[k] = 2. * b.weight;
       }
       gradient.segment<2>(2 * v) += b.axes.transpose() * g_local;
-      const Matrix2 H = b.axes.transpose() * h_local.asDiagonal() * b.axes;
-      hessian.add(elements_[i], H);
+      if(hessian != nullptr) hessian->add(elements_[i], Matrix2(b.axes.transpose() * h_local.asDiagonal() * b.axes));
     }
   }
 
-private:
   static Vector2 outside_distance(const Box& b, const Vector2& p)
   {
     const Vector2 local = b.axes * (p - b.center);

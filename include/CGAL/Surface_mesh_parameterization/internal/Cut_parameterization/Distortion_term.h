@@ -26,6 +26,20 @@ class Distortion_term : public Energy_term
   mutable std::vector<Eigen::Matrix<double, 6, 1>> face_gradient_;
   mutable std::vector<Eigen::Matrix<double, 6, 6>> face_hessian_;
 
+  /// Adds the per-face gradients, in face order (the same sum for any thread count).
+  void scatter_gradient(Eigen::VectorXd& gradient) const
+  {
+    for(std::size_t f = 0; f < face_gradient_.size(); ++f)
+    {
+      const auto& t = mesh_.faces[f];
+      for(int k = 0; k < 3; ++k)
+      {
+        gradient[2*t[k]] += face_gradient_[f][2*k];
+        gradient[2*t[k]+1] += face_gradient_[f][2*k+1];
+      }
+    }
+  }
+
 public:
   Distortion_term(const Chart_mesh& mesh, const std::vector<double>& weights)
     : mesh_(mesh), weights_(weights)
@@ -78,16 +92,19 @@ public:
       face_gradient_[f] = w * (B.transpose() * symmetric_dirichlet_gradient(J));
       face_hessian_[f] = w * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
     });
-    for(std::size_t f = 0; f < n; ++f)
-    {
-      const auto& t = mesh_.faces[f];
-      for(int k = 0; k < 3; ++k)
-      {
-        gradient[2*t[k]] += face_gradient_[f][2*k];
-        gradient[2*t[k]+1] += face_gradient_[f][2*k+1];
-      }
-      hessian.add(first_element_ + int(f), face_hessian_[f]);
-    }
+    scatter_gradient(gradient);
+    for(std::size_t f = 0; f < n; ++f) hessian.add(first_element_ + int(f), face_hessian_[f]);
+  }
+
+  void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override
+  {
+    const std::size_t n = mesh_.number_of_faces();
+    face_gradient_.resize(n);
+    parallel_for(n, [&](std::size_t f) {
+      const double w = weights_[f] * mesh_.area[f];
+      face_gradient_[f] = w * (jacobian_operators_[f].transpose() * symmetric_dirichlet_gradient(mesh_.jacobian(x, f)));
+    });
+    scatter_gradient(gradient);
   }
 
   double max_step(const UV_vector& x, const UV_vector& dx) const override

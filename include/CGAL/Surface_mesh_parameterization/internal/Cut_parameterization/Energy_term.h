@@ -40,6 +40,10 @@ public:
   virtual void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                         Hessian_assembler& hessian) const = 0;
 
+  /// Adds the gradient at x to `gradient`: add_gradient_and_hessian()'s,
+  /// without the Hessian (what a quasi-Newton iteration asks for).
+  virtual void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const = 0;
+
   /// Largest step t along dx such that x + s dx stays admissible for all s < t.
   virtual double max_step(const UV_vector&, const UV_vector&) const
   {

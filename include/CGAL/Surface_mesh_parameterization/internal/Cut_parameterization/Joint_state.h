@@ -42,6 +42,28 @@ struct Joint_timings
   }
 };
 
+/// Work of the inner solver in a phase: iterations, numeric Cholesky
+/// factorizations and solves with them.
+struct Solver_counts
+{
+  std::size_t iterations = 0, factorizations = 0, solves = 0;
+
+  Solver_counts& operator+=(const Solver_counts& other)
+  {
+    iterations += other.iterations;
+    factorizations += other.factorizations;
+    solves += other.solves;
+    return *this;
+  }
+  friend Solver_counts operator-(Solver_counts a, const Solver_counts& b)
+  {
+    a.iterations -= b.iterations;
+    a.factorizations -= b.factorizations;
+    a.solves -= b.solves;
+    return a;
+  }
+};
+
 /// The state of the cut mesh: which edges are cut, its chart mesh and UVs.
 struct Joint_state
 {
@@ -53,6 +75,9 @@ struct Joint_state
   Eigen::VectorXd v;             // per face
   std::size_t newton_iterations = 0;
   std::size_t factorizations = 0;   // numeric Cholesky factorizations of the Newton solves
+  std::size_t solves = 0;           // solves with those factorizations
+  Solver_counts u_step_work;        // the part of the three above spent in the alternation's u-steps
+  std::size_t v_step_factorizations = 0; // of the v-steps' systems, one per v-step (not in the above)
   std::size_t degenerate_faces = 0; // faces whose rest shape was clamped
   double initial_distortion = 0.;
   double distortion = 0.;           // E_d of the final map, before packing scales it

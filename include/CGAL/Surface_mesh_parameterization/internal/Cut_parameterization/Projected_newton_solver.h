@@ -7,8 +7,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_terms_core.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,99 +18,23 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-struct Newton_settings
+class Projected_newton_solver : public Energy_terms_core
 {
-  int max_iterations = 500;
-  /// Stop when the Newton decrement (predicted decrease) falls below
-  /// tolerance * energy_scale. With energy_scale = sum_f w_f A_f this is a
-  /// bound on the decrease of the area-weighted mean distortion, which does
-  /// not depend on the mesh's scale.
-  double tolerance = 1e-9;
-  double energy_scale = 1.;
-};
-
-enum class Newton_status { CONVERGED, MAX_ITERATIONS, STALLED, LINEAR_SOLVE_FAILED, NOT_FINITE };
-
-struct Newton_report
-{
-  Newton_status status = Newton_status::CONVERGED;
-  int iterations = 0;
-  /// numeric Cholesky factorizations of the Hessian: one per iteration whose
-  /// direction did not come from the last factorization (reuse_factor()),
-  /// one for the direction found converged (or not followed, STALLED), and
-  /// the retries with a larger diagonal shift
-  int factorizations = 0;
-  double initial_energy = 0.;
-  double energy = 0.;
-  bool ok() const { return status != Newton_status::LINEAR_SOLVE_FAILED && status != Newton_status::NOT_FINITE; }
-};
-
-class Projected_newton_solver
-{
-  std::vector<Energy_term*> terms_;
-  Hessian_assembler hessian_;
-  Sparse_cholesky cholesky_;
-  int dimension_;
-  bool pattern_built_ = false;
-
-  Eigen::Index ordered_entries_ = 0; // entries of the pattern last ordered
-  bool have_factor_ = false;         // cholesky_ holds a factorization of a Hessian of this pattern
   bool inexact_ = false;             // the last direction came from reuse_factor()
   Eigen::VectorXd cg_r_, cg_z_, cg_p_, cg_q_;
-
-  /// The fill-reducing ordering is kept while the number of elements stays
-  /// within 2% of the pattern it was computed for: a few border barrier pairs
-  /// more or fewer barely change the fill, and the ordering is most of the
-  /// analysis (40k unknowns: 85 ms of METIS, for a 90 ms factorization; see
-  /// Sparse_cholesky::analyze() for 640k). It was kept only when elements
-  /// were added; a barrier that renews its pairs (most of the old ones gone)
-  /// keeps it too since: bimba_i_f10000 refined to 640k faces 87.7 -> 79.1 s.
-  void build_pattern()
-  {
-    hessian_.clear();
-    for(Energy_term* term : terms_) term->declare_elements(hessian_);
-    hessian_.finalize(dimension_);
-    const Eigen::Index entries = hessian_.matrix().nonZeros();
-    const Eigen::Index slack = ordered_entries_ / 50;
-    const bool keep = pattern_built_ && entries <= ordered_entries_ + slack && entries >= ordered_entries_ - slack;
-    if(!keep) ordered_entries_ = entries;
-    cholesky_.analyze(hessian_.matrix(), 2, keep); // unknowns (u, v) of each UV vertex ordered together
-    pattern_built_ = true;
-    have_factor_ = false;
-  }
-
-  /// Lets every term update itself at x; true if an energy value changed.
-  bool update_terms(const UV_vector& x)
-  {
-    bool values = false, pattern = false;
-    for(Energy_term* term : terms_)
-    {
-      const Energy_term::Update u = term->update(x);
-      values = values || u != Energy_term::Update::NONE;
-      pattern = pattern || u == Energy_term::Update::ELEMENTS || u == Energy_term::Update::MORE_ELEMENTS;
-    }
-    if(pattern || !pattern_built_) build_pattern();
-    return values;
-  }
 
 public:
   /// Registers the terms for `dimension` unknowns; the pattern is built by
   /// the first minimize(), once the terms have seen x.
   Projected_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
-    : terms_(terms), dimension_(dimension)
+    : Energy_terms_core(terms, dimension)
   {}
-
-  double energy(const UV_vector& x) const
-  {
-    double e = 0.;
-    for(const Energy_term* term : terms_) e += term->value(x);
-    return e;
-  }
 
   /// Minimizes from an admissible x (finite energy); x stays admissible.
   Newton_report minimize(UV_vector& x, const Newton_settings& settings)
   {
     Newton_report report;
+    const int solves_before = solves_;
     update_terms(x);
     report.initial_energy = report.energy = energy(x);
     if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
@@ -149,6 +72,7 @@ public:
         break;
       }
     }
+    report.solves = solves_ - solves_before;
     return report;
   }
 
@@ -157,26 +81,11 @@ private:
   bool newton_direction(const UV_vector& x, Eigen::VectorXd& gradient, Eigen::VectorXd& direction,
                         int& factorizations)
   {
-    gradient.setZero();
-    hessian_.set_zero();
-    for(const Energy_term* term : terms_) term->add_gradient_and_hessian(x, gradient, hessian_);
-    if(!gradient.allFinite()) return false;
-    // A small diagonal shift removes the rigid-motion null space; it grows if
-    // the factorization still fails.
-    double shift = 1e-9 * (std::max)(hessian_.mean_diagonal(), 1e-300);
-    hessian_.add_to_diagonal(shift);
+    double shift = 0.;
+    if(!assemble(x, gradient, shift)) return false;
     inexact_ = have_factor_ && cholesky_.solves_are_cheap() && reuse_factor(gradient, direction);
     if(inexact_) return true;
-    have_factor_ = false;
-    for(int attempt = 0; attempt < 6; ++attempt)
-    {
-      ++factorizations;
-      if(cholesky_.factorize(hessian_.matrix()) && cholesky_.solve(-gradient, direction))
-        return have_factor_ = true;
-      hessian_.add_to_diagonal(99. * shift);
-      shift *= 100.;
-    }
-    return false;
+    return factorize_and_solve(shift, -gradient, direction, factorizations);
   }
 
   /// Conjugate gradients on H d = -g preconditioned by the factorization of
@@ -202,7 +111,7 @@ private:
     const double target = reuse_tolerance * gradient.norm();
     direction.setZero(gradient.size());
     cg_r_ = -gradient;
-    if(!cholesky_.solve(cg_r_, cg_z_)) return false;
+    if(!solve(cg_r_, cg_z_)) return false;
     cg_p_ = cg_z_;
     double rz = cg_r_.dot(cg_z_);
     for(int k = 0; k < reuse_iterations; ++k)
@@ -214,38 +123,10 @@ private:
       direction += alpha * cg_p_;
       cg_r_ -= alpha * cg_q_;
       if(cg_r_.norm() <= target) return true;
-      if(!cholesky_.solve(cg_r_, cg_z_)) return false;
+      if(!solve(cg_r_, cg_z_)) return false;
       const double rz_next = cg_r_.dot(cg_z_);
       cg_p_ = cg_z_ + (rz_next / rz) * cg_p_;
       rz = rz_next;
-    }
-    return false;
-  }
-
-  double max_step(const UV_vector& x, const UV_vector& direction) const
-  {
-    double t = std::numeric_limits<double>::infinity();
-    for(const Energy_term* term : terms_) t = (std::min)(t, term->max_step(x, direction));
-    return t;
-  }
-
-  /// Flip-free backtracking; updates x and energy. False if no decrease was found.
-  bool line_search(UV_vector& x, const Eigen::VectorXd& direction, double slope, double& current)
-  {
-    double t = (std::min)(1., 0.9 * max_step(x, direction));
-    const double armijo = 1e-4;
-    UV_vector trial(x.size());
-    for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5)
-    {
-      trial = x + t * direction;
-      const double e = energy(trial);
-      if(e <= current + armijo * t * slope)
-      {
-        if(!(e < current)) return false;
-        x.swap(trial);
-        current = e;
-        return true;
-      }
     }
     return false;
   }

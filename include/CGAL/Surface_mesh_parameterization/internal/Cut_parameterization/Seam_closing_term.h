@@ -59,6 +59,16 @@ public:
     return stiffness_ * e;
   }
 
+  void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override
+  {
+    for(const auto& p : pairs_)
+    {
+      const Eigen::Vector2d g = 2. * stiffness_ * (x.template segment<2>(2 * p[0]) - x.template segment<2>(2 * p[1]));
+      gradient.template segment<2>(2 * p[0]) += g;
+      gradient.template segment<2>(2 * p[1]) -= g;
+    }
+  }
+
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
   {
@@ -68,14 +78,8 @@ public:
       block(d, d) = block(d + 2, d + 2) = 2. * stiffness_;
       block(d, d + 2) = block(d + 2, d) = -2. * stiffness_;
     }
-    for(std::size_t i = 0; i < pairs_.size(); ++i)
-    {
-      const int a = pairs_[i][0], b = pairs_[i][1];
-      const Eigen::Vector2d g = 2. * stiffness_ * (x.template segment<2>(2 * a) - x.template segment<2>(2 * b));
-      gradient.template segment<2>(2 * a) += g;
-      gradient.template segment<2>(2 * b) -= g;
-      hessian.add(first_element_ + int(i), block);
-    }
+    add_gradient(x, gradient);
+    for(std::size_t i = 0; i < pairs_.size(); ++i) hessian.add(first_element_ + int(i), block);
   }
 };
 

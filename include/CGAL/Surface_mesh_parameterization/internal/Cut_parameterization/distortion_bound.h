@@ -69,6 +69,7 @@ inline Error_code solve_within_bound(const Joint_settings& settings, bool from_t
   {
     state.newton_iterations = candidate.newton_iterations;
     state.factorizations = candidate.factorizations;
+    state.solves = candidate.solves;
   }
   return OK;
 }
@@ -86,7 +87,7 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
 {
   const double bound = settings.distortion_bound;
   if(!settings.seam_merging || settings.passes == 0 || !(bound > 0.) || state.distortion > bound) return OK;
-  auto relax = [&](Joint_state& s) { return relax_map(settings.merge.newton_iterations, settings.constrained_tolerance, s); };
+  auto relax = [&](Joint_state& s) { return relax_map(settings.merge.newton_iterations, settings.constrained_tolerance, settings.inner_solver, s); };
   Joint_state merged = state;
   std::vector<Merge_step> steps;
   Error_code status = merge_greedily(surface, settings.merge, keep, relax,
@@ -94,6 +95,7 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
   if(status != OK) return status;
   state.newton_iterations = merged.newton_iterations; // the trials' work
   state.factorizations = merged.factorizations;
+  state.solves = merged.solves;
   bool kept = false;
   for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < 3 && !kept; k /= 2, ++tries)
   {
@@ -209,7 +211,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   Error_code status = prepare_first_u_step(surface, face_lambda, unboxed, prepared);
   if(status != OK) return status;
   const Joint_state start = std::move(prepared);
-  std::size_t newton = start.newton_iterations, factorizations = start.factorizations;
+  std::size_t newton = start.newton_iterations, factorizations = start.factorizations, solves = start.solves;
+  Solver_counts u_step_work = start.u_step_work;
+  std::size_t v_step_factorizations = start.v_step_factorizations;
   Joint_timings timings = start.timings; // what came before (indexing, the prepared start)
   // A trial runs as without bound, or with the splits that go on until the
   // bound holds (`split_to_bound`). Without bound, the low-poly splits only
@@ -253,6 +257,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   auto add_work = [&](const Joint_state& s) {
     newton += s.newton_iterations - start.newton_iterations;
     factorizations += s.factorizations - start.factorizations;
+    solves += s.solves - start.solves;
+    u_step_work += s.u_step_work - start.u_step_work;
+    v_step_factorizations += s.v_step_factorizations - start.v_step_factorizations;
     timings.add_since(s.timings, start.timings);
   };
   auto record = [&](double lambda, Joint_state& s) {
@@ -411,6 +418,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     state = std::move(best_any);
     state.newton_iterations = newton;
     state.factorizations = factorizations;
+    state.solves = solves;
+    state.u_step_work = u_step_work;
+    state.v_step_factorizations = v_step_factorizations;
     state.timings = timings;
     return finish_atlas(settings, state);
   }
@@ -431,9 +441,10 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     auto collect_work = [&](Joint_state& s) {
       newton += s.newton_iterations;
       factorizations += s.factorizations;
-      s.newton_iterations = s.factorizations = 0;
+      solves += s.solves;
+      s.newton_iterations = s.factorizations = s.solves = 0;
     };
-    for(Joint_state& c : candidates) c.newton_iterations = c.factorizations = 0;
+    for(Joint_state& c : candidates) c.newton_iterations = c.factorizations = c.solves = 0;
     std::vector<Error_code> statuses(candidates.size(), OK);
     auto shorten = [&](std::size_t i) {
       if((statuses[i] = straighten_under_bound(surface, unboxed, user_cut, candidates[i])) == OK
@@ -478,6 +489,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   }
   state.newton_iterations = newton;
   state.factorizations = factorizations;
+  state.solves = solves;
+  state.u_step_work = u_step_work;
+  state.v_step_factorizations = v_step_factorizations;
   state.timings = timings;
   return finish_atlas(settings, state);
 }

@@ -172,15 +172,16 @@ std::vector<char> faces_on_new_cuts(const Surface& surface, const std::vector<ch
   return flagged;
 }
 
-/// At most `iterations` Newton iterations (weights 1, no box, no barrier)
-/// on the charts of `s` that hold a face flagged in `faces` (all charts if
+/// At most `iterations` iterations of the inner `solver` (weights 1, no box,
+/// no barrier) on the charts of `s` that hold a face flagged in `faces` (all charts if
 /// `faces` is empty); the other charts keep their map, and `s.distortion`
 /// becomes the E_d of the whole map. A trial split changes only the charts
 /// its cut runs through, and the charts of this energy are independent:
 /// solving those alone judges the split locally, at the cost of its charts
 /// instead of the whole map's (a low-poly part beside a large mesh: a
 /// 12-face box beside an 80k-face sphere).
-inline Error_code relax_charts(int iterations, double tolerance, const std::vector<char>& faces, Joint_state& s)
+inline Error_code relax_charts(int iterations, double tolerance, Inner_solver solver, const std::vector<char>& faces,
+                               Joint_state& s)
 {
   const Chart_mesh& full = s.chart;
   Chart_mesh part;
@@ -223,10 +224,12 @@ inline Error_code relax_charts(int iterations, double tolerance, const std::vect
     for(std::size_t v = 0; v < full_vertex.size(); ++v)
       y.template segment<2>(2 * Eigen::Index(v)) = s.x.template segment<2>(2 * Eigen::Index(full_vertex[v]));
   }
-  Distortion_minimizer minimizer(solved_mesh, std::vector<double>(solved_mesh.number_of_faces(), 1.));
+  Distortion_minimizer minimizer(solved_mesh, std::vector<double>(solved_mesh.number_of_faces(), 1.), false, 0., 0.,
+                                 solver);
   const Newton_report report = minimizer.minimize(y, iterations, tolerance);
   s.newton_iterations += report.iterations;
   s.factorizations += report.factorizations;
+  s.solves += report.solves;
   if(whole) s.x = y;
   else
     for(std::size_t v = 0; v < full_vertex.size(); ++v)
@@ -283,7 +286,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
       if(chosen.size() > 1)
       {
         Joint_state trial = state;
-        trial.newton_iterations = trial.factorizations = 0;
+        trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
         std::vector<Cut_path> cuts;
         for(std::size_t i : chosen) cuts.push_back(paths[i]);
         apply_cuts(surface, cuts, trial);
@@ -291,11 +294,13 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
         if(status != OK) return status;
         state.newton_iterations += trial.newton_iterations;
         state.factorizations += trial.factorizations;
+        state.solves += trial.solves;
         const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
         if(added > 0. && accept(state.distortion, trial.distortion, added))
         {
           trial.newton_iterations = state.newton_iterations;
           trial.factorizations = state.factorizations;
+          trial.solves = state.solves;
           state = std::move(trial);
           kept += int(chosen.size()) - 1; // the loop counts one
           continue;
@@ -309,7 +314,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     // the trial of candidate i: `state` cut along its path, solved
     auto judge = [&](std::size_t i, Joint_state& trial) {
       trial = state;
-      trial.newton_iterations = trial.factorizations = 0; // its own work
+      trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
       apply_cuts(surface, {paths[i]}, trial);
       return solve(trial, faces_on_new_cuts(surface, state.is_cut, trial.is_cut));
     };
@@ -318,6 +323,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     auto weigh = [&](Joint_state& trial, std::size_t index) {
       state.newton_iterations += trial.newton_iterations;
       state.factorizations += trial.factorizations;
+      state.solves += trial.solves;
       const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
       // (a path whose cut could not keep the charts disks is not cut: added 0)
       if(added > 0. && accept(state.distortion, trial.distortion, added))
@@ -390,6 +396,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     {
       best.newton_iterations = state.newton_iterations;
       best.factorizations = state.factorizations;
+      best.solves = state.solves;
       state = std::move(best);
     }
     if(!split_kept) break;

@@ -92,6 +92,12 @@ struct Joint_settings
   double rerouting_allowance = 0.01;
   Merge_settings merge;
   Packing_settings packing;
+  // the solver of every minimization of the UVs (u-steps, final solve, trials)
+  Inner_solver inner_solver = Inner_solver::NEWTON;
+  // with the quasi-Newton solver, the u-steps after the first are capped
+  // at this many times max_alternation_newton_iterations (its iterations
+  // cost a gradient and a solve, Newton's a factorization)
+  int quasi_newton_iteration_factor = 3;
   std::function<bool(const Joint_progress&)> progress; // false: cancel
 
   bool valid() const
@@ -130,11 +136,16 @@ inline Error_code u_step(const Joint_settings& settings, int alternation, Distor
 {
   Scoped_timer timer(state.timings.u_steps);
   for(Eigen::Index f = 0; f < state.v.size(); ++f) minimizer.weights()[f] = state.v[f] * state.v[f] + settings.gamma;
+  const int later_cap = settings.max_alternation_newton_iterations
+                        * (settings.inner_solver == Inner_solver::NEWTON ? 1 : settings.quasi_newton_iteration_factor);
   const int cap = alternation == 0 ? settings.max_newton_iterations
-                                    : (std::min)(settings.max_newton_iterations, settings.max_alternation_newton_iterations);
+                                    : (std::min)(settings.max_newton_iterations, later_cap);
   const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
   state.newton_iterations += report.iterations;
   state.factorizations += report.factorizations;
+  state.solves += report.solves;
+  state.u_step_work += Solver_counts{std::size_t(report.iterations), std::size_t(report.factorizations),
+                                     std::size_t(report.solves)};
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
@@ -150,7 +161,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   const std::size_t nf = surface.number_of_faces();
   const double mean_edge = mean_edge_length(surface);
   Scoped_timer u_setup(state.timings.u_steps);
-  Distortion_minimizer minimizer(state.chart, std::vector<double>(nf, 1.));
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(nf, 1.), false, 0., 0., settings.inner_solver);
   u_setup.stop();
   Scoped_timer v_setup(state.timings.v_steps);
   Discontinuity_solver v_solver(dual_edges(surface, state.is_cut, face_lambda), state.chart.area, face_lambda);
@@ -170,6 +181,7 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
       Scoped_timer v_step(state.timings.v_steps);
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, settings.lambda, mean_edge, state.v))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      ++state.v_step_factorizations;
       v_step.stop();
       ++alternation;
       if(settings.progress && !settings.progress({"alternate", pass, alternation, settings.alternations_per_pass(),
@@ -191,11 +203,13 @@ inline Error_code final_minimization(const Joint_settings& settings, bool inject
                                      Joint_state& state)
 {
   Distortion_minimizer minimizer(state.chart, std::vector<double>(state.chart.number_of_faces(), 1.), injective,
-                                 stiffness > 0. ? settings.bounding_box_aspect_ratio : 0., stiffness);
+                                 stiffness > 0. ? settings.bounding_box_aspect_ratio : 0., stiffness,
+                                 settings.inner_solver);
   const double tolerance = injective || boxed ? settings.constrained_tolerance : settings.final_tolerance;
   const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, tolerance);
   state.newton_iterations += report.iterations;
   state.factorizations += report.factorizations;
+  state.solves += report.solves;
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
@@ -377,6 +391,7 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
   };
   state.newton_iterations += rerouted.newton_iterations;
   state.factorizations += rerouted.factorizations;
+  state.solves += rerouted.solves;
   if(second == OK
      && distortion(rerouted, rerouted_unboxed) <= distortion(state, unboxed) + settings.rerouting_allowance)
   {
@@ -392,12 +407,13 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
 /// At most `iterations` Newton iterations on the map of `s` (weights 1, no
 /// box, no barrier), which judge a trial cut or zip; `s.distortion` is set
 /// to the E_d they leave.
-inline Error_code relax_map(int iterations, double tolerance, Joint_state& s)
+inline Error_code relax_map(int iterations, double tolerance, Inner_solver solver, Joint_state& s)
 {
-  Distortion_minimizer minimizer(s.chart, std::vector<double>(s.chart.number_of_faces(), 1.));
+  Distortion_minimizer minimizer(s.chart, std::vector<double>(s.chart.number_of_faces(), 1.), false, 0., 0., solver);
   const Newton_report report = minimizer.minimize(s.x, iterations, tolerance);
   s.newton_iterations += report.iterations;
   s.factorizations += report.factorizations;
+  s.solves += report.solves;
   s.distortion = mean_distortion(s.chart, s.x);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
@@ -441,7 +457,7 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     if(settings.progress && !settings.progress({"split", settings.passes, 0, settings.alternations_per_pass(),
                                                 settings.epsilon_end, s.distortion}))
       return ERROR_CANCELED;
-    return relax_charts(settings.split.newton_iterations, settings.constrained_tolerance, faces, s);
+    return relax_charts(settings.split.newton_iterations, settings.constrained_tolerance, settings.inner_solver, faces, s);
   };
   auto accept = [&](double before, double after, double added) {
     return bounded ? after < before : before - after >= low_poly_split_gain * added;
@@ -466,6 +482,7 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     {
       state.newton_iterations = split.newton_iterations; // the trials' work
       state.factorizations = split.factorizations;
+      state.solves = split.solves;
       return OK;
     }
     state = std::move(split);
@@ -572,6 +589,9 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   status = decide_cuts(coarse.surface, coarse.face_lambda, coarse_settings, coarse_state);
   state.newton_iterations += coarse_state.newton_iterations;
   state.factorizations += coarse_state.factorizations;
+  state.solves += coarse_state.solves;
+  state.u_step_work += coarse_state.u_step_work;
+  state.v_step_factorizations += coarse_state.v_step_factorizations;
   state.initial_distortion = coarse_state.initial_distortion;
   state.timings.add(coarse_state.timings); // no final solve or packing on the copy
   if(status != OK) return true;
@@ -621,7 +641,8 @@ Error_code prepare_first_u_step(const Surface& surface, const std::vector<double
   if(status != OK) return status;
   state.v = Eigen::VectorXd::Ones(Eigen::Index(surface.number_of_faces()));
   Scoped_timer setup(state.timings.u_steps);
-  Distortion_minimizer minimizer(state.chart, std::vector<double>(surface.number_of_faces(), 1.));
+  Distortion_minimizer minimizer(state.chart, std::vector<double>(surface.number_of_faces(), 1.), false, 0., 0.,
+                                 settings.inner_solver);
   setup.stop();
   const Error_code first = u_step(settings, 0, minimizer, state);
   if(first != OK) return first;

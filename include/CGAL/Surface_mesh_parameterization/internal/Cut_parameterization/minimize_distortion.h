@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Proxy_quasi_newton_solver.h>
 
 #include <memory>
 
@@ -27,7 +28,8 @@ class Distortion_minimizer
   Distortion_term term_;
   std::unique_ptr<Border_barrier_term> barrier_;
   std::unique_ptr<Bounding_box_term> box_;
-  Projected_newton_solver solver_;
+  std::unique_ptr<Projected_newton_solver> newton_;
+  std::unique_ptr<Proxy_quasi_newton_solver> proxy_;
 
   std::vector<Energy_term*> terms()
   {
@@ -39,13 +41,18 @@ class Distortion_minimizer
 
 public:
   Distortion_minimizer(const Chart_mesh& mesh, std::vector<double> weights, bool injective = false,
-                       double box_aspect_ratio = 0., double box_stiffness = 0.)
+                       double box_aspect_ratio = 0., double box_stiffness = 0.,
+                       Inner_solver solver = Inner_solver::NEWTON)
     : weights_(std::move(weights)), term_(mesh, weights_),
       barrier_(injective ? std::make_unique<Border_barrier_term>(mesh) : nullptr),
       box_(box_aspect_ratio > 0. && box_stiffness > 0.
-             ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio, box_stiffness) : nullptr),
-      solver_(terms(), 2 * mesh.number_of_vertices)
-  {}
+             ? std::make_unique<Bounding_box_term>(mesh, box_aspect_ratio, box_stiffness) : nullptr)
+  {
+    if(solver == Inner_solver::PROXY_QUASI_NEWTON)
+      proxy_ = std::make_unique<Proxy_quasi_newton_solver>(terms(), 2 * int(mesh.number_of_vertices));
+    else
+      newton_ = std::make_unique<Projected_newton_solver>(terms(), 2 * int(mesh.number_of_vertices));
+  }
 
   std::vector<double>& weights() { return weights_; }
 
@@ -55,7 +62,7 @@ public:
     settings.max_iterations = max_iterations;
     settings.tolerance = tolerance;
     settings.energy_scale = term_.weighted_area();
-    return solver_.minimize(x, settings);
+    return proxy_ ? proxy_->minimize(x, settings) : newton_->minimize(x, settings);
   }
 };
 

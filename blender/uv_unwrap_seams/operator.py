@@ -1,0 +1,196 @@
+"""UV > Unwrap with optimized seams: the operator, its options (the redo
+panel) and its two ways of running: invoke() (from the menu: a modal
+operator, the work on a worker thread, progress in the status bar, Esc
+cancels) and execute() (from a script, `blender -b`, or the redo panel:
+to completion before it returns). Either way the mesh is written once at
+the end, as one undo step, and left as it was on cancel or failure."""
+import bpy
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
+
+from .job import Job
+
+
+_running = []  # the job of the modal operator while it runs
+
+
+def running_job():
+    """The job of the operator running modally (from the menu), or None."""
+    return _running[0] if _running else None
+
+
+def _mesh_objects(context):
+    return [o for o in context.selected_objects if o.type == 'MESH' and len(o.data.polygons) > 0]
+
+
+class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
+    """Cut the selected meshes along short, hidden seams and unwrap them into a texture atlas without overlaps"""
+    bl_idname = "uv.unwrap_optimized_seams"
+    bl_label = "Unwrap with optimized seams"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    seam_cost: FloatProperty(name="Seam cost", default=1.0, min=0.01, soft_max=10.0,
+                             description="Cost of a seam relative to distortion: higher gives shorter seams "
+                                         "and more stretch")
+    use_max_distortion: BoolProperty(name="Bound the distortion", default=False,
+                                     description="Search the seam cost for a distortion bound")
+    max_distortion: FloatProperty(name="Distortion bound", default=4.2, min=4.0, soft_max=6.0,
+                                  description="Largest E_d (4: no stretch at all)")
+    hide_seams: FloatProperty(name="Hide seams", default=0.0, min=0.0, soft_max=10.0,
+                              description="Move seams to where the surface is least visible (0: off)")
+    margin: FloatProperty(name="Margin (texels)", default=2.0, min=0.0, soft_max=32.0,
+                          description="Gap between charts and to the square's sides, in texels")
+    texture_size: IntProperty(name="Texture size", default=1024, min=1, soft_max=8192,
+                              description="Width and height of the texture in texels (the margin's unit)")
+    box: EnumProperty(name="Box", default='GENTLE',
+                      items=[('GENTLE', "Gentle square", "Round charts off toward a square, within a small "
+                                                          "distortion budget"),
+                             ('TIGHT', "Tight box", "Pull each chart into a box of the given aspect ratio"),
+                             ('NONE', "None", "No box: the least distortion")])
+    box_aspect: FloatProperty(name="Box width / height", default=1.0, min=0.05, max=20.0)
+    keep_seams: BoolProperty(name="Keep marked seams", default=True,
+                             description="The seams already marked stay seams")
+    protect: EnumProperty(name="Never cut", default='sharp_edge',
+                          items=[('sharp_edge', "Sharp edges", "Edges marked sharp are never cut"),
+                                 ('ATTRIBUTE', "Edge attribute", "Edges whose boolean attribute is set"),
+                                 ('NONE', "Nothing", "Any edge may be cut")])
+    protect_attribute: StringProperty(name="Attribute", default="uv_keep",
+                                      description="Boolean edge attribute of the edges never to cut")
+    new_uv_map: BoolProperty(name="New UV map", default=False,
+                             description="Write a new UV map instead of the active one")
+    uv_map_name: StringProperty(name="UV map name", default="OptimizedSeams")
+
+    # -- options
+    def _options(self):
+        options = {"seam_cost": self.seam_cost, "hide_seams": self.hide_seams or None,
+                   "padding": self.margin, "texture_size": self.texture_size}
+        if self.use_max_distortion:
+            options["max_distortion"] = self.max_distortion
+        if self.box == 'TIGHT':
+            options["box"] = self.box_aspect
+        elif self.box == 'NONE':
+            options["box"] = False
+        return options
+
+    def _job(self, context):
+        protect = {'sharp_edge': "sharp_edge", 'ATTRIBUTE': self.protect_attribute, 'NONE': None}[self.protect]
+        preferences = context.preferences.addons[__package__].preferences
+        return Job(_mesh_objects(context), self._options(), keep_seams=self.keep_seams, protect=protect,
+                   uv_map_name=self.uv_map_name if self.new_uv_map else None,
+                   program=bpy.path.abspath(preferences.uv_unwrap_program))
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.prop(self, "seam_cost")
+        row = layout.row(heading="Distortion bound")
+        row.prop(self, "use_max_distortion", text="")
+        sub = row.row()
+        sub.active = self.use_max_distortion
+        sub.prop(self, "max_distortion", text="")
+        layout.prop(self, "hide_seams")
+        layout.prop(self, "margin")
+        layout.prop(self, "texture_size")
+        layout.prop(self, "box")
+        if self.box == 'TIGHT':
+            layout.prop(self, "box_aspect")
+        layout.prop(self, "keep_seams")
+        layout.prop(self, "protect")
+        if self.protect == 'ATTRIBUTE':
+            layout.prop(self, "protect_attribute")
+        layout.prop(self, "new_uv_map")
+        if self.new_uv_map:
+            layout.prop(self, "uv_map_name")
+
+    @classmethod
+    def poll(cls, context):
+        return any(o.type == 'MESH' for o in context.selected_objects)
+
+    # -- edit mode: the mesh data is read and written in object mode
+    def _leave_edit_mode(self, context):
+        self._was_edit = context.mode == 'EDIT_MESH'
+        if self._was_edit:
+            bpy.ops.object.mode_set(mode='OBJECT')
+
+    def _restore_mode(self):
+        if getattr(self, "_was_edit", False):
+            bpy.ops.object.mode_set(mode='EDIT')
+
+    def _finish(self, context, job):
+        if job.cancelled:
+            self._restore_mode()
+            self.report({'INFO'}, "Unwrap canceled: the meshes are unchanged")
+            return {'CANCELLED'}
+        if not job.succeeded():
+            self._restore_mode()
+            self.report({'ERROR'}, "Unwrap failed: %s" % job.error)
+            return {'CANCELLED'}
+        job.apply()
+        self._restore_mode()
+        for w in job.warnings():
+            self.report({'WARNING'}, w)
+        self.report({'INFO'}, job.summary())
+        return {'FINISHED'}
+
+    # -- from a script or the redo panel: to completion
+    def execute(self, context):
+        if not _mesh_objects(context):
+            self.report({'ERROR'}, "No selected mesh object with faces")
+            return {'CANCELLED'}
+        self._leave_edit_mode(context)
+        try:
+            job = self._job(context)
+        except RuntimeError as e:
+            self._restore_mode()
+            self.report({'ERROR'}, str(e))
+            return {'CANCELLED'}
+        job.run()
+        return self._finish(context, job)
+
+    # -- from the menu: modal, on a worker thread
+    def invoke(self, context, event):
+        if not _mesh_objects(context):
+            self.report({'ERROR'}, "No selected mesh object with faces")
+            return {'CANCELLED'}
+        self._leave_edit_mode(context)
+        try:
+            self._job_running = self._job(context)
+        except RuntimeError as e:
+            self._restore_mode()
+            self.report({'ERROR'}, str(e))
+            return {'CANCELLED'}
+        self._job_running.start()
+        _running[:] = [self._job_running]
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.1, window=context.window)
+        wm.modal_handler_add(self)
+        wm.progress_begin(0, 100)
+        return {'RUNNING_MODAL'}
+
+    def modal(self, context, event):
+        job = self._job_running
+        if event.type == 'ESC':
+            job.cancel()
+        if event.type == 'TIMER':
+            if job.running():
+                context.workspace.status_text_set(job.status())
+                context.window_manager.progress_update(int(100 * job.current / max(1, len(job.objects))))
+                return {'RUNNING_MODAL'}
+            self._end(context)
+            return self._finish(context, job)
+        # the view can still be turned and zoomed; editing waits for the result
+        if event.type in {'MIDDLEMOUSE', 'WHEELUPMOUSE', 'WHEELDOWNMOUSE', 'TRACKPADPAN', 'TRACKPADZOOM',
+                          'MOUSEMOVE', 'INBETWEEN_MOUSEMOVE'}:
+            return {'PASS_THROUGH'}
+        return {'RUNNING_MODAL'}
+
+    def _end(self, context):
+        _running.clear()
+        wm = context.window_manager
+        wm.event_timer_remove(self._timer)
+        wm.progress_end()
+        context.workspace.status_text_set(None)
+
+
+def menu_entry(self, context):
+    self.layout.separator()
+    self.layout.operator(UV_OT_unwrap_optimized_seams.bl_idname)

@@ -1,0 +1,198 @@
+// What both inner solvers (Projected_newton_solver, Proxy_quasi_newton_solver)
+// share: the energy terms, the sparsity pattern of their Hessian and its
+// symbolic factorization, the assembly and factorization of the projected
+// Hessian, the flip-free step bound and the backtracking line search.
+#ifndef CGAL_SMP_CUT_INTERNAL_ENERGY_TERMS_CORE_H
+#define CGAL_SMP_CUT_INTERNAL_ENERGY_TERMS_CORE_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+// Inner_solver (cut_parameterization_named_parameters.h) chooses between
+// Projected_newton_solver (NEWTON) and Proxy_quasi_newton_solver.
+using Surface_mesh_parameterization::Inner_solver;
+
+struct Newton_settings
+{
+  int max_iterations = 500;
+  /// Stop when the Newton decrement (predicted decrease) falls below
+  /// tolerance * energy_scale. With energy_scale = sum_f w_f A_f this is a
+  /// bound on the decrease of the area-weighted mean distortion, which does
+  /// not depend on the mesh's scale.
+  double tolerance = 1e-9;
+  double energy_scale = 1.;
+};
+
+enum class Newton_status { CONVERGED, MAX_ITERATIONS, STALLED, LINEAR_SOLVE_FAILED, NOT_FINITE };
+
+struct Newton_report
+{
+  Newton_status status = Newton_status::CONVERGED;
+  int iterations = 0;
+  /// numeric Cholesky factorizations of the Hessian (retries with a larger
+  /// diagonal shift included)
+  int factorizations = 0;
+  /// solves with a factorization (forward and back substitutions)
+  int solves = 0;
+  double initial_energy = 0.;
+  double energy = 0.;
+  bool ok() const { return status != Newton_status::LINEAR_SOLVE_FAILED && status != Newton_status::NOT_FINITE; }
+};
+
+class Energy_terms_core
+{
+protected:
+  std::vector<Energy_term*> terms_;
+  Hessian_assembler hessian_;
+  Sparse_cholesky cholesky_;
+  int dimension_;
+  bool pattern_built_ = false;
+  Eigen::Index ordered_entries_ = 0; // entries of the pattern last ordered
+  bool have_factor_ = false;         // cholesky_ holds a factorization of a Hessian of this pattern
+
+  Energy_terms_core(const std::vector<Energy_term*>& terms, int dimension) : terms_(terms), dimension_(dimension) {}
+
+  /// The fill-reducing ordering is kept while the number of elements stays
+  /// within 2% of the pattern it was computed for: a few border barrier pairs
+  /// more or fewer barely change the fill, and the ordering is most of the
+  /// analysis (40k unknowns: 85 ms of METIS, for a 90 ms factorization; see
+  /// Sparse_cholesky::analyze() for 640k). It was kept only when elements
+  /// were added; a barrier that renews its pairs (most of the old ones gone)
+  /// keeps it too since: bimba_i_f10000 refined to 640k faces 87.7 -> 79.1 s.
+  void build_pattern()
+  {
+    hessian_.clear();
+    for(Energy_term* term : terms_) term->declare_elements(hessian_);
+    hessian_.finalize(dimension_);
+    const Eigen::Index entries = hessian_.matrix().nonZeros();
+    const Eigen::Index slack = ordered_entries_ / 50;
+    const bool keep = pattern_built_ && entries <= ordered_entries_ + slack && entries >= ordered_entries_ - slack;
+    if(!keep) ordered_entries_ = entries;
+    cholesky_.analyze(hessian_.matrix(), 2, keep); // unknowns (u, v) of each UV vertex ordered together
+    pattern_built_ = true;
+    have_factor_ = false;
+  }
+
+  /// Lets every term update itself at x; true if an energy value changed.
+  /// `pattern_changed` is set where the Hessian's pattern was built again
+  /// (the factorization is then gone).
+  bool update_terms(const UV_vector& x, bool* pattern_changed = nullptr)
+  {
+    bool values = false, pattern = false;
+    for(Energy_term* term : terms_)
+    {
+      const Energy_term::Update u = term->update(x);
+      values = values || u != Energy_term::Update::NONE;
+      pattern = pattern || u == Energy_term::Update::ELEMENTS || u == Energy_term::Update::MORE_ELEMENTS;
+    }
+    pattern = pattern || !pattern_built_;
+    if(pattern) build_pattern();
+    if(pattern_changed != nullptr) *pattern_changed = pattern;
+    return values;
+  }
+
+  /// The gradient at x and the projected Hessian, with a small diagonal
+  /// shift that removes the rigid-motion null space (returned); false if the
+  /// gradient is not finite.
+  bool assemble(const UV_vector& x, Eigen::VectorXd& gradient, double& shift)
+  {
+    gradient.setZero(x.size());
+    hessian_.set_zero();
+    for(const Energy_term* term : terms_) term->add_gradient_and_hessian(x, gradient, hessian_);
+    if(!gradient.allFinite()) return false;
+    shift = 1e-9 * (std::max)(hessian_.mean_diagonal(), 1e-300);
+    hessian_.add_to_diagonal(shift);
+    return true;
+  }
+
+  /// The gradient alone at x; false if it is not finite.
+  bool gradient_at(const UV_vector& x, Eigen::VectorXd& gradient) const
+  {
+    gradient.setZero(x.size());
+    for(const Energy_term* term : terms_) term->add_gradient(x, gradient);
+    return gradient.allFinite();
+  }
+
+  /// Factorizes the assembled Hessian and solves H d = rhs; the shift
+  /// grows (x100, up to 5 times) while the factorization fails. Adds the
+  /// factorizations to `factorizations`.
+  bool factorize_and_solve(double shift, const Eigen::VectorXd& rhs, Eigen::VectorXd& direction, int& factorizations)
+  {
+    have_factor_ = false;
+    for(int attempt = 0; attempt < 6; ++attempt)
+    {
+      ++factorizations;
+      if(cholesky_.factorize(hessian_.matrix()) && solve(rhs, direction))
+        return have_factor_ = true;
+      hessian_.add_to_diagonal(99. * shift);
+      shift *= 100.;
+    }
+    return false;
+  }
+
+  /// Solves with the last factorization (counted in solves_).
+  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& result)
+  {
+    ++solves_;
+    return cholesky_.solve(rhs, result);
+  }
+  int solves_ = 0; // solves with a factorization since construction
+
+  double max_step(const UV_vector& x, const UV_vector& direction) const
+  {
+    double t = std::numeric_limits<double>::infinity();
+    for(const Energy_term* term : terms_) t = (std::min)(t, term->max_step(x, direction));
+    return t;
+  }
+
+  /// Flip-free backtracking from a step of at most `first_step`; updates x
+  /// and energy. False if no decrease was found.
+  bool line_search(UV_vector& x, const Eigen::VectorXd& direction, double slope, double& current,
+                   double first_step = 1.)
+  {
+    double t = (std::min)(first_step, 0.9 * max_step(x, direction));
+    const double armijo = 1e-4;
+    UV_vector trial(x.size());
+    for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5)
+    {
+      trial = x + t * direction;
+      const double e = energy(trial);
+      if(e <= current + armijo * t * slope)
+      {
+        if(!(e < current)) return false;
+        x.swap(trial);
+        current = e;
+        last_step_ = t;
+        return true;
+      }
+    }
+    return false;
+  }
+  double last_step_ = 0.; // the step length the last successful line search took
+
+public:
+  double energy(const UV_vector& x) const
+  {
+    double e = 0.;
+    for(const Energy_term* term : terms_) e += term->value(x);
+    return e;
+  }
+};
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

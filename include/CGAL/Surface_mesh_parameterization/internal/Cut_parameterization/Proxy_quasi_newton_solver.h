@@ -1,0 +1,187 @@
+// Quasi-Newton minimization of a sum of energy terms over UV coordinates,
+// on a proxy of the Hessian factorized at a few iterates only: the projected
+// Hessian of the energy (Projected_newton_solver's) is factorized at the
+// first iterate, and the iterations after it cost a gradient and one solve
+// with that factorization, improved by L-BFGS updates (Nocedal 1980) with
+// the factorization as their initial inverse Hessian. The proxy is
+// factorized again where the steps stop paying (each step's decrease falls
+// below a fraction of the first one's after the last factorization), and at
+// the end: convergence is decided on the exact projected Newton direction.
+// Every step is capped so that no term becomes inadmissible (no face flips,
+// no border crossing), then backtracks (Armijo), as in projected Newton.
+//
+// The idea of a fixed proxy of the Hessian, factorized once, for the
+// symmetric Dirichlet energy is that of Kovalsky et al. 2016 ("Accelerated
+// Quadratic Proxy") and of the Sobolev-preconditioned quasi-Newton of Zhu et
+// al. 2018 ("Blended Cured Quasi-Newton"), whose proxy is the Laplacian;
+// here it is the projected Hessian at an iterate, which already holds the
+// anisotropy of the distorted faces and the weights of the alternation
+// (v² + γ, fixed during a u-step).
+#ifndef CGAL_SMP_CUT_INTERNAL_PROXY_QUASI_NEWTON_SOLVER_H
+#define CGAL_SMP_CUT_INTERNAL_PROXY_QUASI_NEWTON_SOLVER_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_terms_core.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+class Proxy_quasi_newton_solver : public Energy_terms_core
+{
+  // L-BFGS pairs since the last factorization, oldest first
+  std::vector<Eigen::VectorXd> s_, y_;
+  std::vector<double> rho_;
+  Eigen::VectorXd alpha_buffer_;
+
+public:
+  /// Curvature pairs kept.
+  /// (16: the same counts within 3% on bimba_i_f10000)
+  static constexpr int memory = 8;
+  /// The proxy is factorized again once a step decreases the energy by less
+  /// than this fraction of the first step after the last factorization.
+  /// Measured in the manual ("Inner solvers"): 1/50 and 1/200 gave fewer
+  /// factorizations and more iterations, no faster.
+  static constexpr double refactorization_ratio = 0.1;
+
+  Proxy_quasi_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
+    : Energy_terms_core(terms, dimension)
+  {}
+
+  /// Minimizes from an admissible x (finite energy); x stays admissible.
+  /// `iterations` counts the steps, `factorizations` the proxies factorized.
+  Newton_report minimize(UV_vector& x, const Newton_settings& settings)
+  {
+    Newton_report report;
+    const int solves_before = solves_;
+    bool pattern_changed = false;
+    update_terms(x, &pattern_changed);
+    report.initial_energy = report.energy = energy(x);
+    if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
+
+    // the weights or the map changed since the last call: a new proxy
+    have_factor_ = false;
+    Eigen::VectorXd gradient(x.size()), direction, previous_gradient;
+    UV_vector previous_x;
+    bool fresh = false;          // the factorization is of the Hessian at x
+    double first_decrease = 0.;  // of the first step after the last factorization
+    report.status = Newton_status::MAX_ITERATIONS;
+    for(; report.iterations < settings.max_iterations; ++report.iterations)
+    {
+      if(report.iterations > 0)
+      {
+        if(update_terms(x, &pattern_changed)) report.energy = energy(x);
+        if(pattern_changed) have_factor_ = false;
+      }
+      if(!have_factor_)
+      {
+        double shift = 0.;
+        if(!assemble(x, gradient, shift) || !factorize_and_solve(shift, -gradient, direction, report.factorizations))
+          return failed(report, solves_before);
+        clear_pairs();
+        fresh = true;
+      }
+      else
+      {
+        if(!gradient_at(x, gradient)) return failed(report, solves_before);
+        add_pair(x - previous_x, gradient - previous_gradient);
+        if(!quasi_newton_direction(gradient, direction)) return failed(report, solves_before);
+        fresh = false;
+      }
+      const double slope = gradient.dot(direction);
+      if(!(-slope > settings.tolerance * settings.energy_scale))
+      {
+        if(fresh)
+        {
+          report.status = Newton_status::CONVERGED;
+          break;
+        }
+        have_factor_ = false; // decide on the exact projected Newton direction
+        continue;
+      }
+      previous_x = x;
+      previous_gradient = gradient;
+      const double before = report.energy;
+      if(!line_search(x, direction, slope, report.energy))
+      {
+        if(fresh)
+        {
+          report.status = Newton_status::STALLED;
+          break;
+        }
+        have_factor_ = false;
+        continue;
+      }
+      const double decrease = before - report.energy;
+      if(fresh) first_decrease = decrease;
+      else if(decrease < refactorization_ratio * first_decrease) have_factor_ = false;
+    }
+    report.solves = solves_ - solves_before;
+    return report;
+  }
+
+private:
+  Newton_report& failed(Newton_report& report, int solves_before)
+  {
+    report.status = Newton_status::LINEAR_SOLVE_FAILED;
+    report.solves = solves_ - solves_before;
+    return report;
+  }
+
+  void clear_pairs()
+  {
+    s_.clear();
+    y_.clear();
+    rho_.clear();
+  }
+
+  /// Keeps (s, y) where the curvature along s is positive enough (the
+  /// energy is not convex: other pairs would break the update's positive
+  /// definiteness).
+  void add_pair(Eigen::VectorXd s, Eigen::VectorXd y)
+  {
+    const double sy = s.dot(y);
+    if(!(sy > 1e-10 * s.norm() * y.norm())) return;
+    if(int(s_.size()) == memory)
+    {
+      s_.erase(s_.begin());
+      y_.erase(y_.begin());
+      rho_.erase(rho_.begin());
+    }
+    s_.push_back(std::move(s));
+    y_.push_back(std::move(y));
+    rho_.push_back(1. / sy);
+  }
+
+  /// L-BFGS two-loop recursion with the factorized proxy as the initial
+  /// inverse Hessian: direction = -H g.
+  bool quasi_newton_direction(const Eigen::VectorXd& gradient, Eigen::VectorXd& direction)
+  {
+    const int m = int(s_.size());
+    alpha_buffer_.resize(m);
+    Eigen::VectorXd q = gradient;
+    for(int i = m - 1; i >= 0; --i)
+    {
+      alpha_buffer_[i] = rho_[i] * s_[i].dot(q);
+      q -= alpha_buffer_[i] * y_[i];
+    }
+    if(!solve(q, direction)) return false;
+    for(int i = 0; i < m; ++i)
+    {
+      const double beta = rho_[i] * y_[i].dot(direction);
+      direction += (alpha_buffer_[i] - beta) * s_[i];
+    }
+    direction = -direction;
+    return true;
+  }
+};
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,141 @@
+// The inner solvers of the UV minimizations (Inner_solver): the
+// quasi-Newton solver on a factorized proxy of the Hessian against projected
+// Newton, and the gradient-only evaluation it relies on.
+#include "generators.h"
+#include "cut_result_checks.h"
+
+#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+
+#include <cmath>
+#include <random>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace ic = CGAL::Surface_mesh_parameterization::internal::cut;
+using namespace cut_test;
+
+namespace {
+
+struct Solver_chart
+{
+  ic::Indexed_surface<Surface_mesh> surface;
+  ic::Chart_mesh mesh;
+  std::vector<int> corner_uv;
+  ic::UV_vector tutte;
+};
+
+/// The uncut chart mesh of a generated disk and its Tutte map; REQUIREs success.
+void make_solver_chart(const Soup& soup, Solver_chart& chart)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(soup);
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), chart.surface) == ic::Indexing_status::OK);
+  ic::build_chart_mesh(chart.surface, std::vector<char>(chart.surface.edges.size(), 0), chart.mesh, chart.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(chart.mesh, chart.tutte) == ic::Embedding_status::OK);
+}
+
+/// Weights of the kind the alternation uses (v² + γ, some tiny).
+std::vector<double> alternation_like_weights(std::size_t faces)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> v(0., 1.);
+  std::vector<double> w(faces);
+  for(std::size_t f = 0; f < faces; ++f)
+  {
+    const double value = f % 5 == 0 ? 1e-3 * v(random) : v(random);
+    w[f] = value * value + 1e-7;
+  }
+  return w;
+}
+
+} // namespace
+
+// The quasi-Newton iterations ask the terms for their gradient alone: it must
+// be the gradient that add_gradient_and_hessian() gives.
+TEST(InnerSolvers, gradient_alone_equals_the_gradient_with_the_hessian)
+{
+  Solver_chart chart;
+  make_solver_chart(wavy_disk_soup(8, 22, 5), chart);
+  const std::vector<double> weights = alternation_like_weights(chart.mesh.number_of_faces());
+  ic::Distortion_term distortion(chart.mesh, weights);
+  // a box much smaller than the chart: every border vertex is outside it
+  ic::Bounding_box_term box(chart.mesh, 2., 300.);
+  box.update(chart.tutte);
+  for(ic::Energy_term* term : std::vector<ic::Energy_term*>{&distortion, &box})
+  {
+    ic::Hessian_assembler hessian;
+    term->declare_elements(hessian);
+    hessian.finalize(int(chart.tutte.size()));
+    Eigen::VectorXd with_hessian = Eigen::VectorXd::Zero(chart.tutte.size());
+    Eigen::VectorXd alone = Eigen::VectorXd::Zero(chart.tutte.size());
+    term->add_gradient_and_hessian(chart.tutte, with_hessian, hessian);
+    term->add_gradient(chart.tutte, alone);
+    ASSERT_TRUE(with_hessian.norm() > 0.);
+    EXPECT_EQ((with_hessian - alone).norm(), 0.);
+  }
+}
+
+// Both solvers minimize the same energy from the Tutte map, with the weights
+// of an alternation: the quasi-Newton solver reaches Newton's minimum,
+// never flips a face, and factorizes less often than it iterates.
+TEST(InnerSolvers, quasi_newton_reaches_the_newton_minimum_with_fewer_factorizations)
+{
+  for(const Soup& soup : {hemisphere_soup(7, 20), wavy_disk_soup(8, 22, 5), cone_soup(6, 16, 1., 1.5)})
+  {
+    Solver_chart chart;
+    make_solver_chart(soup, chart);
+    const std::vector<double> weights = alternation_like_weights(chart.mesh.number_of_faces());
+    ic::UV_vector newton_x = chart.tutte, quasi_x = chart.tutte;
+    ic::Distortion_minimizer newton(chart.mesh, weights, false, 0., 0., SMP::Inner_solver::NEWTON);
+    ic::Distortion_minimizer quasi(chart.mesh, weights, false, 0., 0., SMP::Inner_solver::PROXY_QUASI_NEWTON);
+    const ic::Newton_report a = newton.minimize(newton_x, 500, 1e-9);
+    const ic::Newton_report b = quasi.minimize(quasi_x, 2000, 1e-9);
+    ASSERT_EQ(int(a.status), int(ic::Newton_status::CONVERGED));
+    ASSERT_EQ(int(b.status), int(ic::Newton_status::CONVERGED));
+    EXPECT_EQ(ic::number_of_flipped_faces(chart.mesh, quasi_x), 0);
+    EXPECT_TRUE(b.energy < b.initial_energy);
+    EXPECT_NEAR(b.energy, a.energy, 1e-6 * a.energy);
+    // every step reused a factorization: more solves than factorizations
+    EXPECT_TRUE(b.factorizations < b.iterations) << b.factorizations << " factorizations, " << b.iterations << " iterations";
+    EXPECT_TRUE(b.solves > b.factorizations);
+  }
+}
+
+// The whole method with the quasi-Newton inner solver: a valid atlas (no
+// flip, no crossing border, in the unit square) with the distortion Newton
+// reaches on the same mesh; its iterations reuse factorizations. (Below
+// 8,000 unknowns Newton reuses its last factorization too, as a
+// preconditioner: the two counts of factorizations do not compare here.)
+TEST(InnerSolvers, cut_and_parameterize_with_the_quasi_newton_solver)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(16, 32, 1.5, 0.2));
+  Cut_run<Surface_mesh> newton(mesh), quasi(mesh);
+  newton.run(SMP::parameters::inner_solver(SMP::Inner_solver::NEWTON));
+  quasi.run(SMP::parameters::inner_solver(SMP::Inner_solver::PROXY_QUASI_NEWTON));
+  check_cut_result(mesh, newton);
+  check_cut_result(mesh, quasi);
+  EXPECT_TRUE(quasi.result.distortion <= newton.result.distortion + 0.05)
+    << quasi.result.distortion << " against " << newton.result.distortion;
+  // the alternation's u-steps (weights fixed in each) reuse their factorizations
+  EXPECT_TRUE(quasi.result.alternation_factorizations < quasi.result.alternation_newton_iterations)
+    << quasi.result.alternation_factorizations << " factorizations, " << quasi.result.alternation_newton_iterations
+    << " iterations; in all " << quasi.result.number_of_factorizations << ", " << quasi.result.newton_iterations;
+  EXPECT_TRUE(quasi.result.number_of_solves > quasi.result.number_of_factorizations);
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(InnerSolvers, quasi_newton_result_does_not_depend_on_the_thread_count)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(24, 48, 1.5, 0.2)); // over 2000 faces: loops split
+  expect_same_result_for_thread_counts(mesh, {1, 2, 5}, [](Cut_run<Surface_mesh>& run) {
+    return run.run(SMP::parameters::inner_solver(SMP::Inner_solver::PROXY_QUASI_NEWTON));
+  });
+}
+#else
+TEST(InnerSolvers, quasi_newton_result_does_not_depend_on_the_thread_count)
+{
+  GTEST_SKIP() << "built without TBB: one thread only";
+}
+#endif
