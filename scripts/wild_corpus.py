@@ -354,6 +354,8 @@ def main():
                 continue
             rng = random.Random(int(hashlib.md5((stem + d).encode()).hexdigest()[:8], 16))
             p, f = (pts, faces) if DAMAGES[d] is None else DAMAGES[d](pts, [list(x) for x in faces], rng)
+            if not f:  # the damage left no face (holes in a tiny mesh): nothing to unwrap
+                continue
             name = stem + '.' + d
             mesh_file = os.path.join(args.work, name + '.obj')
             write_obj(mesh_file, p, f)

@@ -233,7 +233,7 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
   flagged[0] = 1;
   const ic::UV_vector before = s.x;
   const double distortion_before = ic::mean_distortion(s.chart, s.x);
-  ASSERT_EQ(ic::relax_charts(30, 1e-9, flagged, s), SMP::OK);
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, flagged, s), SMP::OK);
   EXPECT_LT(s.distortion, distortion_before);
   EXPECT_DOUBLE_EQ(s.distortion, ic::mean_distortion(s.chart, s.x));
   EXPECT_GT(s.newton_iterations, 0);
@@ -245,6 +245,6 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
     }
   // no flag: the whole map, as relax_map()
   ic::Joint_state whole = s;
-  ASSERT_EQ(ic::relax_charts(30, 1e-9, {}, whole), SMP::OK);
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, {}, whole), SMP::OK);
   EXPECT_LT(whole.distortion, s.distortion);
 }
