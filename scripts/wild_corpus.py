@@ -130,7 +130,8 @@ def damage_dup(pts, faces, rng):
 
 
 def damage_fins(pts, faces, rng):
-    ef = [e for e, fs in edge_faces(faces).items() if len(fs) == 2]
+    edges = edge_faces(faces)
+    ef = [e for e, fs in edges.items() if len(fs) == 2] or list(edges)  # interior edges, else any
     pts = list(map(list, pts))
     out = list(faces)
     d = 0.02 * diagonal(np.array(pts))
@@ -353,7 +354,11 @@ def main():
             if d != 'refine' and len(faces) > args.max_faces:
                 continue
             rng = random.Random(int(hashlib.md5((stem + d).encode()).hexdigest()[:8], 16))
-            p, f = (pts, faces) if DAMAGES[d] is None else DAMAGES[d](pts, [list(x) for x in faces], rng)
+            try:
+                p, f = (pts, faces) if DAMAGES[d] is None else DAMAGES[d](pts, [list(x) for x in faces], rng)
+            except (ValueError, IndexError) as e:  # a damage that does not apply to this mesh
+                print('%s.%s: damage not applied (%s)' % (stem, d, e), flush=True)
+                continue
             if not f:  # the damage left no face (holes in a tiny mesh): nothing to unwrap
                 continue
             name = stem + '.' + d
