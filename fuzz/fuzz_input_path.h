@@ -14,11 +14,16 @@
 //     out (empty, non-triangle, non-finite), nor an unknown one;
 //   - when it returns OK: every corner UV is finite, no UV triangle has a
 //     non-positive signed area, and the OBJ writer writes every vertex and
-//     face.
+//     face;
+//   - the statistics writer of uv_unwrap (unwrap_run.h) turns every
+//     outcome into JSON that parses back, whatever bytes the file, its
+//     messages and its name hold (the input's first bytes serve as a file
+//     name), with the error and warnings as printable_text() makes them.
 #ifndef UV_TOOLS_FUZZ_INPUT_PATH_H
 #define UV_TOOLS_FUZZ_INPUT_PATH_H
 
 #include "mesh_input.h"
+#include "unwrap_run.h"
 
 #include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
@@ -53,7 +58,7 @@ inline const char* extension_of(std::uint8_t first_byte)
 }
 
 /// Unwraps a mesh accepted by the input path and checks the result.
-inline void unwrap_and_check(const mesh_input::Mesh& mesh)
+inline CGAL::Surface_mesh_parameterization::Cut_and_parameterize_result unwrap_and_check(const mesh_input::Mesh& mesh)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using Mesh = mesh_input::Mesh;
@@ -72,7 +77,7 @@ inline void unwrap_and_check(const mesh_input::Mesh& mesh)
   if(result.error == SMP::ERROR_EMPTY_MESH || result.error == SMP::ERROR_NON_TRIANGULAR_MESH ||
      result.error == SMP::ERROR_NON_FINITE_COORDINATE || result.error == SMP::ERROR_NON_MANIFOLD)
     violation("the input path accepted a mesh the library rejects with " + name);
-  if(!result.ok()) return;
+  if(!result.ok()) return result;
 
   for(Mesh::Face_index f : faces(m))
   {
@@ -97,6 +102,32 @@ inline void unwrap_and_check(const mesh_input::Mesh& mesh)
     if(line.rfind("f ", 0) == 0) ++f;
   }
   if(v != num_vertices(m) || f != num_faces(m)) violation("OBJ output lost vertices or faces");
+  return result;
+}
+
+/// The statistics of `summary` dumped as uv_unwrap dumps them, parsed back
+/// and compared with the summary's text fields.
+inline void check_statistics(const uv_unwrap::Run_summary& summary)
+{
+  for(int indent : {-1, 2})
+  {
+    std::string text;
+    try
+    {
+      text = uv_unwrap::statistics_text(summary, indent);
+    }
+    catch(const std::exception& e)
+    {
+      violation(std::string("the statistics writer threw: ") + e.what());
+    }
+    const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
+    if(parsed.is_discarded()) violation("the statistics are not valid JSON");
+    if(indent < 0 && text.find('\n') != std::string::npos) violation("a JSON line holds a line break");
+    if(parsed["input"] != cut_tools::printable_text(summary.input)) violation("the input name changed in JSON");
+    if(summary.status != "ok" && parsed["error"] != cut_tools::printable_text(summary.error))
+      violation("the error message changed in JSON");
+    if(parsed["warnings"].size() != summary.warnings.size()) violation("warnings lost in JSON");
+  }
 }
 
 /// Runs the input path on `data`; `scratch_dir` holds the temporary file.
@@ -113,6 +144,9 @@ inline void run(const std::uint8_t* data, std::size_t size, const std::string& s
 
   mesh_input::Mesh mesh;
   mesh_input::Input_report report;
+  uv_unwrap::Run_summary summary;
+  summary.input = std::string(reinterpret_cast<const char*>(data + 1), std::min<std::size_t>(size - 1, 64)) + "." +
+                  extension_of(data[0]); // any bytes, as a file name may hold
   bool accepted = false;
   try
   {
@@ -125,9 +159,18 @@ inline void run(const std::uint8_t* data, std::size_t size, const std::string& s
     if(std::find(known.begin(), known.end(), e.status) == known.end())
       violation("undocumented input status " + e.status);
     if(std::string(e.what()).find('\n') != std::string::npos) violation("multi-line error message");
+    summary.status = e.status;
+    summary.error = e.what();
   }
   std::remove(filename.c_str());
-  if(!accepted) return;
+  if(!accepted)
+  {
+    check_statistics(summary);
+    return;
+  }
+  summary.warnings = report.warnings;
+  summary.vertices = num_vertices(mesh);
+  summary.faces = num_faces(mesh);
 
   if(num_faces(mesh) == 0) violation("accepted an empty mesh");
   if(!CGAL::is_triangle_mesh(mesh)) violation("accepted a mesh that is not a triangle mesh");
@@ -138,7 +181,16 @@ inline void run(const std::uint8_t* data, std::size_t size, const std::string& s
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       violation("accepted a non-finite coordinate");
   }
-  if(num_faces(mesh) <= max_faces) unwrap_and_check(mesh);
+  if(num_faces(mesh) <= max_faces)
+  {
+    summary.result = unwrap_and_check(mesh);
+    if(!summary.result.ok())
+    {
+      summary.status = CGAL::Surface_mesh_parameterization::error_name(summary.result.error);
+      summary.error = "the library returned " + summary.status;
+    }
+  }
+  check_statistics(summary);
 }
 
 } // namespace fuzz_input

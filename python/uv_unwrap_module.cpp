@@ -254,7 +254,7 @@ Result unwrap(const py::object& V_object, const py::object& F_object, double sea
   for(const std::string& w : result.warnings) summary.warnings.push_back(w);
   result.warnings = summary.warnings;
   py::module_ json = py::module_::import("json");
-  result.stats = json.attr("loads")(uv_unwrap::statistics(summary).dump());
+  result.stats = json.attr("loads")(uv_unwrap::statistics_text(summary));
   for(const std::string& w : result.warnings)
     if(PyErr_WarnEx(PyExc_UserWarning, ("uv_unwrap: " + w).c_str(), 1) != 0) throw py::error_already_set();
   return result;

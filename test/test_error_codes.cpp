@@ -4,10 +4,12 @@
 // fallback for zero-length boundary edges, and the package's message / name
 // tables.
 #include "cut_result_checks.h"
+#include "wild_input_generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <cstring>
 #include <set>
@@ -281,6 +283,34 @@ TYPED_TEST(ErrorCodesTyped, non_manifold_vertex)
   }
   build_mesh(corners, other);
   EXPECT_EQ(parameterize(other), SMP::ERROR_NON_MANIFOLD);
+}
+
+// Two quads folded over their common diagonal a-c, each split along it
+// with Euler::split_face (which does not look for an existing edge): two
+// edges join a and c. The library refuses this by name (the tools' input
+// path splits such quads along their other diagonal).
+TYPED_TEST(ErrorCodesTyped, two_edges_joining_the_same_vertices)
+{
+  TypeParam mesh;
+  const Soup folded = folded_quads_soup();
+  const auto vertex_of = build_mesh(folded, mesh);
+  const auto a = vertex_of[0], c = vertex_of[2];
+  std::vector<typename boost::graph_traits<TypeParam>::face_descriptor> quads(faces(mesh).begin(), faces(mesh).end());
+  for(auto f : quads)
+  {
+    typename boost::graph_traits<TypeParam>::halfedge_descriptor ha, hc;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      if(target(h, mesh) == a) ha = h;
+      if(target(h, mesh) == c) hc = h;
+    }
+    CGAL::Euler::split_face(ha, hc, mesh);
+  }
+  ASSERT_EQ(num_faces(mesh), std::size_t(4));
+  ASSERT_EQ(num_edges(mesh), std::size_t(8)); // a-c twice
+  EXPECT_EQ(parameterize(mesh), SMP::ERROR_NON_MANIFOLD);
+  Cut_run<TypeParam> run(mesh);
+  EXPECT_EQ(run.run().error, SMP::ERROR_NON_MANIFOLD);
 }
 
 // (the evenly spaced fallback is internal: what is checked is the map it gives)

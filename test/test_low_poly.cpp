@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -153,7 +154,10 @@ TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
     settings.candidates = 3;
     settings.best_candidate = best;
     std::vector<std::vector<char>> judged; // the cut of each candidate, in the order judged
-    auto solve = [&](ic::Joint_state& trial) {
+    auto solve = [&](ic::Joint_state& trial, const std::vector<char>& faces) {
+      // the faces to solve: those on the candidate's new cut, and only those
+      EXPECT_EQ(faces, ic::faces_on_new_cuts(surface, start.is_cut, trial.is_cut));
+      EXPECT_NE(std::count(faces.begin(), faces.end(), char(1)), 0);
       const double added = ic::seam_length_3d(surface, trial.is_cut);
       trial.distortion = start.distortion - (judged.size() == 1 ? 1. : 0.01) * added;
       trial.newton_iterations += 10; // the work of a judgment
@@ -175,4 +179,72 @@ TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
       EXPECT_NE(judged[1], judged[2]);
     }
   }
+}
+
+// A batch (Split_settings::batch): the most distorted vertices whose paths
+// do not meet, cut in one trial, judged once and kept together.
+TEST(Greedy_splits, a_batch_is_cut_and_judged_in_one_trial)
+{
+  Surface_mesh mesh;
+  build_mesh(hemisphere_soup(8, 24), mesh);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Joint_state state;
+  state.is_cut.assign(surface.edges.size(), 0);
+  ic::build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
+  state.distortion = ic::mean_distortion(state.chart, state.x);
+  ic::Split_settings settings;
+  settings.max_splits = 4;
+  settings.batch = 4;
+  int judged = 0;
+  std::vector<char> first_cut;
+  auto solve = [&](ic::Joint_state& trial, const std::vector<char>&) {
+    if(judged++ == 0) first_cut = trial.is_cut;
+    trial.distortion = 4.; // every trial pays
+    return SMP::OK;
+  };
+  auto accept = [](double before, double after, double) { return after < before; };
+  int kept = 0;
+  ASSERT_EQ(ic::split_greedily(surface, settings, 4.5, solve, accept, state, kept), SMP::OK);
+  EXPECT_EQ(judged, 1); // one trial: E_d 4 is below the stop
+  EXPECT_GE(kept, 2);
+  EXPECT_LE(kept, 4);
+  EXPECT_EQ(state.is_cut, first_cut);
+  EXPECT_GT(ic::seam_length_3d(surface, state.is_cut), 0.);
+}
+
+// relax_charts() solves the charts holding a flagged face and leaves the
+// others' map as it was; E_d is that of the whole map.
+TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
+{
+  Surface_mesh mesh;
+  build_mesh(two_components_soup(6), mesh);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Joint_state s;
+  s.is_cut.assign(surface.edges.size(), 0);
+  ic::build_chart_mesh(surface, s.is_cut, s.chart, s.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(s.chart, s.x) == ic::Embedding_status::OK); // circles: distorted
+  int charts = 0;
+  const std::vector<int> chart_of_face = ic::chart_of_faces(s.chart, charts);
+  ASSERT_EQ(charts, 2);
+  std::vector<char> flagged(s.chart.number_of_faces(), 0);
+  flagged[0] = 1;
+  const ic::UV_vector before = s.x;
+  const double distortion_before = ic::mean_distortion(s.chart, s.x);
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, flagged, s), SMP::OK);
+  EXPECT_LT(s.distortion, distortion_before);
+  EXPECT_DOUBLE_EQ(s.distortion, ic::mean_distortion(s.chart, s.x));
+  EXPECT_GT(s.newton_iterations, 0);
+  for(std::size_t f = 0; f < s.chart.number_of_faces(); ++f)
+    for(int v : s.chart.faces[f])
+    {
+      const bool moved = s.x.segment<2>(2 * v) != before.segment<2>(2 * v);
+      if(chart_of_face[f] != chart_of_face[0]) EXPECT_FALSE(moved) << "face " << f << " of the other chart moved";
+    }
+  // no flag: the whole map, as relax_map()
+  ic::Joint_state whole = s;
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, {}, whole), SMP::OK);
+  EXPECT_LT(whole.distortion, s.distortion);
 }

@@ -8,6 +8,7 @@
 #define CUT_PARAM_TOOLS_UNWRAP_RUN_H
 
 #include "mesh_input.h"
+#include "printable_text.h"
 #include "uv_unwrap_options.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
@@ -47,17 +48,22 @@ struct Run_summary
 };
 
 // The statistics of one run (documented in the README); numbers that are
-// not finite become null (JSON has no NaN).
+// not finite become null (JSON has no NaN). File names, messages and
+// warnings go through printable_text() (a file name, or a message quoting a
+// file, may hold bytes that are not UTF-8, which nlohmann-json refuses), so
+// that building and dumping the object never throws on text.
 inline nlohmann::ordered_json statistics(const Run_summary& s)
 {
+  using cut_tools::printable_text;
   const SMP::Cut_and_parameterize_timings& t = s.result.timings;
   auto number = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
   nlohmann::ordered_json j;
-  j["input"] = s.input;
-  j["output"] = s.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.output);
-  j["status"] = s.status;
-  j["error"] = s.status == "ok" ? nlohmann::ordered_json() : nlohmann::ordered_json(s.error);
-  j["warnings"] = s.warnings;
+  j["input"] = printable_text(s.input);
+  j["output"] = s.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(printable_text(s.output));
+  j["status"] = printable_text(s.status);
+  j["error"] = s.status == "ok" ? nlohmann::ordered_json() : nlohmann::ordered_json(printable_text(s.error));
+  j["warnings"] = nlohmann::ordered_json::array();
+  for(const std::string& w : s.warnings) j["warnings"].push_back(printable_text(w));
   j["vertices"] = s.vertices;
   j["faces"] = s.faces;
   j["degenerate_faces"] = s.result.number_of_degenerate_faces;
@@ -88,6 +94,14 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
       if(value.is_number() || value.is_boolean() || value.is_object())
         if(key != "vertices" && key != "faces") value = nullptr;
   return j;
+}
+
+/// The statistics as text: one line (`indent` < 0, for JSON Lines) or
+/// indented; invalid UTF-8 that got past printable_text() is replaced
+/// (U+FFFD) rather than thrown on.
+inline std::string statistics_text(const Run_summary& s, int indent = -1)
+{
+  return statistics(s).dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 /// cut_and_parameterize() on `mesh` with `options`; fills the summary's

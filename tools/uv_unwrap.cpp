@@ -25,8 +25,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include "preview/preview.h"
-
-#include <nlohmann/json.hpp>
+#include "printable_text.h"
 
 #include <algorithm>
 #include <array>
@@ -74,6 +73,9 @@ using face_descriptor = Mesh::Face_index;
 
 using uv_unwrap::Failure;
 using uv_unwrap::Options;
+using cut_tools::printable_text;
+using uv_unwrap::Run_summary;
+using uv_unwrap::statistics_text;
 
 // ---------------------------------------------------------------- input
 
@@ -149,22 +151,20 @@ void read_mesh(const std::string& filename, Mesh& mesh, std::vector<std::string>
   }
   for(const std::string& w : report.warnings)
   {
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     warnings.push_back(w);
   }
 }
 
 // ---------------------------------------------------------------- output
 
-using uv_unwrap::Run_summary;
-using uv_unwrap::statistics;
-
 void write_stats(const std::string& filename, const Run_summary& s)
 {
   std::ofstream out(filename);
-  out << statistics(s).dump(2) << '\n';
+  out << statistics_text(s, 2) << '\n';
   out.close();
-  if(!out) throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
+  if(!out)
+    throw Failure("cannot write '" + filename + "'", "ERROR_CANNOT_WRITE");
 }
 
 template <typename SeamMap, typename UVMap, typename VMap>
@@ -255,7 +255,7 @@ void write_output(const std::string& output, const std::string& format, const st
     if(!written)
     {
       const std::string w = "the input's normals, groups and materials are not kept: " + problem;
-      std::cerr << "uv_unwrap: warning: " << w << std::endl;
+      std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
       warnings.push_back(w);
     }
   }
@@ -263,7 +263,7 @@ void write_output(const std::string& output, const std::string& format, const st
   {
     const std::string w = "the input was repaired: the output has the repaired mesh's numbering, without the "
                           "input's normals, groups and materials";
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     warnings.push_back(w);
   }
   if(!written && format == "obj") written = SMP::write_OBJ_with_uvs(output, mesh, uvmap);
@@ -358,7 +358,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                          },
                          summary);
   for(std::size_t i = warned; i < summary.warnings.size(); ++i)
-    std::cerr << "uv_unwrap: warning: " << summary.warnings[i] << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(summary.warnings[i]) << std::endl;
   if(interrupted) // after the library's last report
     throw Failure(std::string("unwrapping failed: ") + SMP::error_message(SMP::ERROR_CANCELED) + " (ERROR_CANCELED)",
                   "ERROR_CANCELED");
@@ -420,7 +420,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
       Run_summary part;
       part.input = name;
       if(!options.quiet)
-        std::cout << "uv_unwrap: " << input << ", " << name << ": " << num_vertices(mesh) << " vertices, "
+        std::cout << "uv_unwrap: " << printable_text(input) << ", " << printable_text(name) << ": " << num_vertices(mesh) << " vertices, "
                   << num_faces(mesh) << " faces" << std::endl;
       unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
 
@@ -481,7 +481,7 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
     summary.seam_visibility = seam_length > 0. ? seen / seam_length : 0.;
   for(const std::string& w : doc.warnings)
   {
-    std::cerr << "uv_unwrap: warning: " << w << std::endl;
+    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
     summary.warnings.push_back(w);
   }
   if(interrupted) throw Failure("interrupted", "ERROR_CANCELED");
@@ -541,7 +541,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);
   if(!options.quiet)
-    std::cout << "uv_unwrap: " << summary.input << ": " << summary.vertices << " vertices, "
+    std::cout << "uv_unwrap: " << printable_text(summary.input) << ": " << summary.vertices << " vertices, "
               << summary.faces << " faces" << std::endl;
 
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
@@ -575,10 +575,10 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
               << (std::isnan(summary.seam_visibility) ? std::string()
                   : "  seam visibility " + std::to_string(summary.seam_visibility) + " (visibility " +
                     std::to_string(summary.visibility_seconds) + " s)\n")
-              << "  wrote " << output;
+              << "  wrote " << printable_text(output);
     for(const std::string* file : {&options.stats, &options.svg, &options.png, &options.v_field, &options.v_png,
                                    &options.save_seams_file})
-      if(!file->empty()) std::cout << ", " << *file;
+      if(!file->empty()) std::cout << ", " << printable_text(*file);
     std::cout << std::endl;
   }
 }
@@ -659,7 +659,7 @@ int main(int argc, char** argv)
   }
   catch(const Failure& e)
   {
-    std::cerr << "uv_unwrap: error: " << e.what() << std::endl;
+    std::cerr << "uv_unwrap: error: " << printable_text(e.what()) << std::endl;
     return EXIT_FAILURE;
   }
 
@@ -672,7 +672,7 @@ int main(int argc, char** argv)
     jsonl_file.open(options.jsonl);
     if(!jsonl_file)
     {
-      std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+      std::cerr << "uv_unwrap: error: cannot write '" << printable_text(options.jsonl) << "'" << std::endl;
       return EXIT_FAILURE;
     }
     jsonl = &jsonl_file;
@@ -701,15 +701,15 @@ int main(int argc, char** argv)
     {
       ++failures;
       const bool named = inputs.size() == 1 || summary.error.find(summary.input) != std::string::npos;
-      std::cerr << "uv_unwrap: error: " << (named ? std::string() : summary.input + ": ") << summary.error
+      std::cerr << "uv_unwrap: error: " << printable_text((named ? std::string() : summary.input + ": ") + summary.error)
                 << std::endl;
     }
-    if(jsonl) *jsonl << statistics(summary).dump() << std::endl;
+    if(jsonl) *jsonl << statistics_text(summary) << std::endl;
     if(interrupted) break; // the inputs left are not started
   }
   if(jsonl && !*jsonl)
   {
-    std::cerr << "uv_unwrap: error: cannot write '" << options.jsonl << "'" << std::endl;
+    std::cerr << "uv_unwrap: error: cannot write '" << printable_text(options.jsonl) << "'" << std::endl;
     ++failures;
   }
   if(inputs.size() > 1 && !options.quiet)

@@ -3,6 +3,7 @@
 
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
@@ -23,6 +24,55 @@ std::string format_point(const File_point& p)
   std::ostringstream out;
   out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
   return out.str();
+}
+
+// The soup repair: `points` and `polygons` (not a polygon mesh: `problem`
+// says why; `name`: the input, quoted, for messages) repaired, oriented and built into `mesh`, whose non-manifold
+// vertices are then duplicated; `file_points` are the points of the file, for
+// report.point_vertex. Throws Input_error where nothing can be built.
+void repair_as_soup(const std::string& name, const std::vector<Point_3>& file_points, std::vector<Point_3>& points,
+                    std::vector<detail::Polygon>& polygons, const std::string& problem, Mesh& mesh,
+                    Input_report& report)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  mesh.clear();
+  PMP::repair_polygon_soup(points, polygons);
+  PMP::orient_polygon_soup(points, polygons);
+  if(polygons.empty())
+    detail::fail("ERROR_EMPTY_MESH", name + ": no valid face left after repairing (" + problem + ")");
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    detail::fail("ERROR_NON_MANIFOLD", name + " is not manifold (" + problem + ") and could not be repaired");
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
+  std::map<Point_3, long> vertex_at;
+  for(Mesh::Vertex_index v : vertices(mesh)) vertex_at.emplace(mesh.point(v), long(std::size_t(v)));
+  report.point_vertex.assign(file_points.size(), -1);
+  for(std::size_t i = 0; i < file_points.size(); ++i)
+    if(auto it = vertex_at.find(file_points[i]); it != vertex_at.end()) report.point_vertex[i] = it->second;
+  report.face_origin.clear();
+  report.repaired = true;
+  report.warnings.push_back(
+    "not a manifold, consistently oriented mesh (" + problem + "): repaired as a polygon soup (" +
+    std::to_string(report.file_vertices) + " vertices, " + std::to_string(report.file_faces) +
+    " faces -> " + std::to_string(num_vertices(mesh)) + " vertices, " + std::to_string(num_faces(mesh)) +
+    " faces; coincident vertices merged" +
+    (duplicated ? ", " + std::to_string(duplicated) + " non-manifold vertices duplicated" : std::string()) +
+    "); vertex and face indices below refer to the repaired mesh");
+}
+
+// An edge of `mesh` whose two vertices are joined by another edge too (a
+// triangulated polygon whose diagonal was already an edge: in the soup, an
+// edge of 3 or 4 faces), or a null edge.
+Mesh::Edge_index first_parallel_edge(const Mesh& mesh)
+{
+  std::map<std::pair<std::size_t, std::size_t>, Mesh::Edge_index> seen;
+  for(Mesh::Edge_index e : mesh.edges())
+  {
+    std::size_t a = std::size_t(mesh.vertex(e, 0)), b = std::size_t(mesh.vertex(e, 1));
+    if(a > b) std::swap(a, b);
+    if(!seen.emplace(std::make_pair(a, b), e).second) return e;
+  }
+  return Mesh::null_edge();
 }
 
 } // namespace
@@ -74,34 +124,12 @@ void mesh_from_polygon_soup(const std::vector<File_point>& file_points, std::vec
   report.file_faces = polygons.size();
   if(polygons.empty()) detail::fail("ERROR_EMPTY_MESH", name + " has no faces");
 
+  const std::vector<Point_3> file_points_kept = points; // the repairs renumber `points`
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
     std::string problem = detail::describe_soup_problem(polygons, points.size());
     if(problem.empty()) problem = "not a polygon mesh";
-    const std::vector<Point_3> file_points_kept = points; // the repair renumbers `points`
-    PMP::repair_polygon_soup(points, polygons);
-    PMP::orient_polygon_soup(points, polygons);
-    if(polygons.empty())
-      detail::fail("ERROR_EMPTY_MESH", name + ": no valid face left after repairing (" +
-                                       problem + ")");
-    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      detail::fail("ERROR_NON_MANIFOLD", name + " is not manifold (" + problem +
-                                         ") and could not be repaired");
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    const std::size_t duplicated = PMP::duplicate_non_manifold_vertices(mesh);
-    std::map<Point_3, long> vertex_at;
-    for(Mesh::Vertex_index v : vertices(mesh)) vertex_at.emplace(mesh.point(v), long(std::size_t(v)));
-    report.point_vertex.assign(file_points_kept.size(), -1);
-    for(std::size_t i = 0; i < file_points_kept.size(); ++i)
-      if(auto it = vertex_at.find(file_points_kept[i]); it != vertex_at.end()) report.point_vertex[i] = it->second;
-    report.repaired = true;
-    report.warnings.push_back(
-      "not a manifold, consistently oriented mesh (" + problem + "): repaired as a polygon soup (" +
-      std::to_string(report.file_vertices) + " vertices, " + std::to_string(report.file_faces) +
-      " faces -> " + std::to_string(num_vertices(mesh)) + " vertices, " + std::to_string(num_faces(mesh)) +
-      " faces; coincident vertices merged" +
-      (duplicated ? ", " + std::to_string(duplicated) + " non-manifold vertices duplicated" : std::string()) +
-      "); vertex and face indices below refer to the repaired mesh");
+    repair_as_soup(name, file_points_kept, points, polygons, problem, mesh, report);
   }
   else
   {
@@ -143,6 +171,20 @@ void mesh_from_polygon_soup(const std::vector<File_point>& file_points, std::vec
       (refused ? "; " + std::to_string(refused) + " degenerate or self-intersecting polygons split at their first corner"
                : std::string()) +
       ")");
+  }
+
+  // A polygon split along a diagonal that was already an edge (two quads
+  // folded over their common diagonal) leaves two edges between the same
+  // vertices: an edge of 3 or 4 triangles, which the unwrapping cannot take.
+  // The triangulated mesh then goes through the soup repair, which splits it.
+  if(const Mesh::Edge_index e = first_parallel_edge(mesh); e != Mesh::null_edge())
+  {
+    const std::string problem = "after triangulation, edge (" + std::to_string(std::size_t(mesh.vertex(e, 0))) + ", " +
+                                std::to_string(std::size_t(mesh.vertex(e, 1))) + ") is shared by more than 2 faces";
+    std::vector<Point_3> soup_points;
+    std::vector<detail::Polygon> soup_polygons;
+    PMP::polygon_mesh_to_polygon_soup(mesh, soup_points, soup_polygons);
+    repair_as_soup(name, file_points_kept, soup_points, soup_polygons, problem, mesh, report);
   }
 
   std::size_t first_isolated = 0;

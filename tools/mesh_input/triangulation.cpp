@@ -174,6 +174,45 @@ inline bool triangulation_diagonals(const std::vector<Point_3>& corners, std::ve
   return int(diagonals.size()) == n - 3;
 }
 
+// True if a diagonal of `diagonals` (corner indices) joins two vertices
+// that an edge of `mesh` joins already.
+inline bool joins_joined_vertices(const std::vector<Mesh::Vertex_index>& corner, const Mesh& mesh,
+                                  const std::vector<std::pair<int, int>>& diagonals)
+{
+  for(const auto& [a, b] : diagonals)
+    if(CGAL::halfedge(corner[std::size_t(a)], corner[std::size_t(b)], mesh).second) return true;
+  return false;
+}
+
+// Where a diagonal of the triangulation joins two vertices already joined
+// by an edge of the mesh (two quads folded over a common diagonal, as in
+// quad models with a vertex of two faces), splitting along it would make a
+// second edge between them: an edge of four triangles. The fan from the
+// first corner whose diagonals are all new replaces the triangulation then
+// (for a quad: the other diagonal); if there is none, it stays (the input
+// path then repairs the mesh as a soup).
+inline void avoid_existing_edges(const std::vector<Mesh::Vertex_index>& corner, const Mesh& mesh,
+                                 std::vector<std::pair<int, int>>& diagonals)
+{
+  if(!joins_joined_vertices(corner, mesh, diagonals)) return;
+  const int n = int(corner.size());
+  for(int k = 0; k < n; ++k)
+  {
+    std::vector<std::pair<int, int>> fan;
+    for(int j = 2; j <= n - 2; ++j)
+    {
+      const int a = k, b = (k + j) % n;
+      fan.emplace_back((std::min)(a, b), (std::max)(a, b));
+    }
+    if(!joins_joined_vertices(corner, mesh, fan))
+    {
+      std::sort(fan.begin(), fan.end());
+      diagonals = std::move(fan);
+      return;
+    }
+  }
+}
+
 // Triangulates face f of `mesh` as PMP::triangulate_faces() would, by
 // splitting it along the diagonals found on the polygon alone; falls back
 // to ear_split() where that fails. Returns false on the fallback. Face f
@@ -193,6 +232,7 @@ bool triangulate_face(Mesh::Face_index f, Mesh& mesh)
     ear_split(f, mesh);
     return false;
   }
+  avoid_existing_edges(corner, mesh, diagonals);
   // Diagonals of a triangulation do not cross: each one lies inside exactly
   // one of the pieces cut so far, between two non-adjacent corners of it.
   std::vector<Mesh::Face_index> pieces = {f};

@@ -399,7 +399,8 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// \return a result whose `error` is `OK` or one of: `ERROR_EMPTY_MESH` (no
 ///   face), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE` (a
 ///   vertex of a face has a NaN or infinite coordinate), `ERROR_NON_MANIFOLD`
-///   (a pinched vertex: its faces form several fans), `ERROR_DEGENERATE_FACE`
+///   (a pinched vertex: its faces form several fans; or two edges joining the
+///   same two vertices), `ERROR_DEGENERATE_FACE`
 ///   (only with `reject_degenerate_faces`), `ERROR_WRONG_PARAMETER`,
 ///   `ERROR_NO_TOPOLOGICAL_DISC` (the initial cut failed),
 ///   `ERROR_FORBIDDEN_EDGES_BLOCK_CUT` (the forbidden edges leave no cut that

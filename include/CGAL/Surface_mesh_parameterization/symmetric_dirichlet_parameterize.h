@@ -94,7 +94,7 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 /// \post on `OK`, every face has a UV triangle of positive signed area
 ///
 /// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
-///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`, `ERROR_NON_MANIFOLD` (pinched vertex),
+///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`, `ERROR_NON_MANIFOLD` (pinched vertex, or two edges joining the same two vertices),
 ///   `ERROR_WRONG_PARAMETER` (negative or non-finite weight), `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
 ///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
 ///

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -94,7 +95,8 @@ bool is_manifold_vertex(Vertex v, const TriangleMesh& mesh, int corners)
 }
 
 /// Fills `out` from `mesh`. Fails on an empty mesh, a non-triangle face, a
-/// non-finite coordinate or a non-manifold (pinched) vertex. Vertices in no
+/// non-finite coordinate, a non-manifold (pinched) vertex or two edges
+/// joining the same two vertices. Vertices in no
 /// face are left out (counted in `isolated_vertices`): their coordinates are
 /// not read and they get no UV.
 template <typename TriangleMesh, typename VertexPointMap>
@@ -153,6 +155,17 @@ Indexing_status index_surface(const TriangleMesh& mesh, VertexPointMap vpm,
     out.twin[fe] = twin;
     out.twin[twin] = fe;
     out.edge_of[twin] = out.edge_of[fe];
+  }
+  // two edges joining the same two vertices (a polygon split along a
+  // diagonal that was already an edge): in the soup, an edge of 3 or 4
+  // faces, which the chart meshes (indexed by vertex pairs) cannot hold
+  std::unordered_set<std::uint64_t> joined;
+  joined.reserve(out.edges.size());
+  for(int fe = 0; fe < n_face_edges; ++fe)
+  {
+    if(out.twin[fe] >= 0 && out.twin[fe] < fe) continue; // each edge once
+    const std::uint64_t a = std::uint64_t(out.edge_source(fe)), b = std::uint64_t(out.edge_target(fe));
+    if(!joined.insert(((std::min)(a, b) << 32) | (std::max)(a, b)).second) return Indexing_status::NON_MANIFOLD;
   }
   return Indexing_status::OK;
 }

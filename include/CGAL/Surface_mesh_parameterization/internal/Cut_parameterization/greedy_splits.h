@@ -14,7 +14,9 @@
 // are tried in turn (the first accepted is kept), or all of them (the one
 // that lowers E_d the most per unit of seam length added is kept; those
 // judged at an earlier split only where they can still win), and the
-// splits stop when none is accepted.
+// splits stop when none is accepted. On large meshes, where each trial is a
+// solve of the whole map, a batch of candidates whose paths do not meet is
+// tried first, all cut in one trial (Split_settings::batch).
 #ifndef CGAL_SMP_CUT_INTERNAL_GREEDY_SPLITS_H
 #define CGAL_SMP_CUT_INTERNAL_GREEDY_SPLITS_H
 
@@ -24,6 +26,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -45,6 +48,11 @@ struct Split_settings
   // judged, and the one with the largest E_d decrease per unit of seam
   // length added is kept
   bool best_candidate = false;
+  // more than 1: each split first tries this many of the most distorted
+  // vertices at once (paths apart from each other, one trial, one solve:
+  // large meshes, where every trial is a solve of the whole map); if that
+  // is not accepted, the candidates are tried one at a time as above
+  int batch = 1;
 };
 
 /// Where every candidate is judged (Split_settings::best_candidate), a
@@ -121,9 +129,120 @@ Boundary_paths paths_to_cut_boundary(const Surface& surface, const std::vector<c
   return result;
 }
 
+/// The candidates among `order` (ranked, most distorted first; `paths`
+/// their paths to the boundary, all empty at first and found here) cut
+/// together by a batch split: at most `batch` of the first 4 × `batch`,
+/// each path's vertices off every path taken before it (the boundary
+/// vertices aside), so that the cuts do not meet.
+template <typename Surface>
+std::vector<std::size_t> batch_candidates(const Surface& surface, const std::vector<int>& order, int batch,
+                                          const Boundary_paths& boundary, std::vector<Cut_path>& paths)
+{
+  std::vector<int> face_edge_of(surface.edges.size(), -1);
+  for(int fe = 0; fe < int(surface.edge_of.size()); ++fe) face_edge_of[surface.edge_of[fe]] = fe;
+  std::vector<char> taken(surface.number_of_vertices(), 0);
+  std::vector<std::size_t> chosen;
+  const std::size_t looked_at = (std::min)(order.size(), std::size_t(4 * batch));
+  for(std::size_t i = 0; i < looked_at && int(chosen.size()) < batch; ++i)
+  {
+    if(paths[i].edges.empty()) paths[i].edges = boundary.path_edges(order[i]);
+    std::vector<int> inner; // the path's vertices off the boundary
+    for(int e : paths[i].edges)
+      for(int v : {surface.edge_source(face_edge_of[e]), surface.edge_target(face_edge_of[e])})
+        if(boundary.paths.distance[v] > 0.) inner.push_back(v);
+    if(paths[i].edges.empty() || std::any_of(inner.begin(), inner.end(), [&](int v) { return taken[v] != 0; }))
+      continue;
+    for(int v : inner) taken[v] = 1;
+    chosen.push_back(i);
+  }
+  return chosen;
+}
+
+/// The faces of `surface` on an edge cut in `after` but not in `before`.
+template <typename Surface>
+std::vector<char> faces_on_new_cuts(const Surface& surface, const std::vector<char>& before,
+                                    const std::vector<char>& after)
+{
+  std::vector<char> flagged(surface.number_of_faces(), 0);
+  for(int fe = 0; fe < int(surface.edge_of.size()); ++fe)
+  {
+    const int e = surface.edge_of[fe];
+    if(after[e] && !before[e]) flagged[fe / 3] = 1;
+  }
+  return flagged;
+}
+
+/// At most `iterations` iterations of the inner `solver` (weights 1, no box,
+/// no barrier) on the charts of `s` that hold a face flagged in `faces` (all charts if
+/// `faces` is empty); the other charts keep their map, and `s.distortion`
+/// becomes the E_d of the whole map. A trial split changes only the charts
+/// its cut runs through, and the charts of this energy are independent:
+/// solving those alone judges the split locally, at the cost of its charts
+/// instead of the whole map's (a low-poly part beside a large mesh: a
+/// 12-face box beside an 80k-face sphere).
+inline Error_code relax_charts(int iterations, double tolerance, Inner_solver solver, const std::vector<char>& faces,
+                               Joint_state& s)
+{
+  const Chart_mesh& full = s.chart;
+  Chart_mesh part;
+  std::vector<int> full_vertex; // of each vertex of `part`
+  if(!faces.empty())
+  {
+    int charts = 0;
+    const std::vector<int> chart_of_face = chart_of_faces(full, charts);
+    std::vector<char> solved(std::size_t(charts), 0);
+    for(std::size_t f = 0; f < full.number_of_faces(); ++f)
+      if(faces[f]) solved[std::size_t(chart_of_face[f])] = 1;
+    std::vector<int> part_vertex(std::size_t(full.number_of_vertices), -1);
+    for(std::size_t f = 0; f < full.number_of_faces(); ++f)
+    {
+      if(!solved[std::size_t(chart_of_face[f])]) continue;
+      std::array<int, 3> corners;
+      for(int k = 0; k < 3; ++k)
+      {
+        int& v = part_vertex[std::size_t(full.faces[f][k])];
+        if(v < 0)
+        {
+          v = int(full_vertex.size());
+          full_vertex.push_back(full.faces[f][k]);
+        }
+        corners[k] = v;
+      }
+      part.faces.push_back(corners);
+      part.rest_inverse.push_back(full.rest_inverse[f]);
+      part.area.push_back(full.area[f]);
+    }
+    part.number_of_vertices = int(full_vertex.size());
+  }
+  const bool whole = faces.empty() || part.number_of_faces() == full.number_of_faces();
+  const Chart_mesh& solved_mesh = whole ? full : part;
+  UV_vector y;
+  if(whole) y = s.x;
+  else
+  {
+    y.resize(2 * Eigen::Index(full_vertex.size()));
+    for(std::size_t v = 0; v < full_vertex.size(); ++v)
+      y.template segment<2>(2 * Eigen::Index(v)) = s.x.template segment<2>(2 * Eigen::Index(full_vertex[v]));
+  }
+  Distortion_minimizer minimizer(solved_mesh, std::vector<double>(solved_mesh.number_of_faces(), 1.), false, 0., 0.,
+                                 solver);
+  const Newton_report report = minimizer.minimize(y, iterations, tolerance);
+  s.newton_iterations += report.iterations;
+  s.factorizations += report.factorizations;
+  s.solves += report.solves;
+  if(whole) s.x = y;
+  else
+    for(std::size_t v = 0; v < full_vertex.size(); ++v)
+      s.x.template segment<2>(2 * Eigen::Index(full_vertex[v])) = y.template segment<2>(2 * Eigen::Index(v));
+  s.distortion = mean_distortion(s.chart, s.x);
+  return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+}
+
 /// Splits `state` (a solved cut mesh, `state.distortion` its E_d) while its
 /// E_d is above `stop_at` and `accept(E_d before, E_d after, E_s added)`
-/// takes a split; `solve(state)` solves a trial and sets its `distortion`.
+/// takes a split; `solve(state, faces)` solves a trial (at least the charts
+/// holding a face flagged in `faces`: those on its new cuts) and sets its
+/// `distortion`.
 /// Returns OK or the first error of a solve (then `state` is the last
 /// accepted one); `kept` counts the splits kept.
 template <typename Surface, typename Solve, typename Accept>
@@ -153,21 +272,51 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
         order.push_back(v);
         rank[v] = std::round(1e9 * excess[v] / largest);
       }
+    const std::size_t ranked = (std::min)(order.size(), std::size_t((std::max)(split.candidates, 4 * split.batch)));
     const std::size_t tried = (std::min)(order.size(), std::size_t(split.candidates));
-    std::partial_sort(order.begin(), order.begin() + tried, order.end(), [&](int a, int b) {
+    std::partial_sort(order.begin(), order.begin() + ranked, order.end(), [&](int a, int b) {
       return rank[a] > rank[b] || (rank[a] == rank[b] && a < b);
     });
+    // each candidate's path to the boundary, found once
+    std::vector<Cut_path> paths(ranked);
+    if(split.batch > 1)
+    {
+      // the batch: one trial, kept if the rule accepts it for the seams of all its paths
+      const std::vector<std::size_t> chosen = batch_candidates(surface, order, split.batch, boundary, paths);
+      if(chosen.size() > 1)
+      {
+        Joint_state trial = state;
+        trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
+        std::vector<Cut_path> cuts;
+        for(std::size_t i : chosen) cuts.push_back(paths[i]);
+        apply_cuts(surface, cuts, trial);
+        const Error_code status = solve(trial, faces_on_new_cuts(surface, state.is_cut, trial.is_cut));
+        if(status != OK) return status;
+        state.newton_iterations += trial.newton_iterations;
+        state.factorizations += trial.factorizations;
+        state.solves += trial.solves;
+        const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
+        if(added > 0. && accept(state.distortion, trial.distortion, added))
+        {
+          trial.newton_iterations = state.newton_iterations;
+          trial.factorizations = state.factorizations;
+          trial.solves = state.solves;
+          state = std::move(trial);
+          kept += int(chosen.size()) - 1; // the loop counts one
+          continue;
+        }
+      }
+    }
     Joint_state best;
     double best_gain = -1.; // E_d decrease per unit of E_s added of `best`
-    // each candidate's path to the boundary, found once
-    std::vector<Cut_path> paths(tried);
-    for(std::size_t i = 0; i < tried; ++i) paths[i].edges = boundary.path_edges(order[i]);
+    for(std::size_t i = 0; i < tried; ++i)
+      if(paths[i].edges.empty()) paths[i].edges = boundary.path_edges(order[i]);
     // the trial of candidate i: `state` cut along its path, solved
     auto judge = [&](std::size_t i, Joint_state& trial) {
       trial = state;
       trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
       apply_cuts(surface, {paths[i]}, trial);
-      return solve(trial);
+      return solve(trial, faces_on_new_cuts(surface, state.is_cut, trial.is_cut));
     };
     std::size_t best_index = tried; // the candidate of `best` (the first of equal gains wins)
     // its work counted whatever is kept, then kept if it is accepted and the best so far

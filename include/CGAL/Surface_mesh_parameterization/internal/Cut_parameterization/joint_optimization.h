@@ -452,25 +452,31 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
   if(!settings.greedy_splits || settings.passes == 0 || (!bounded && state.distortion <= low_poly_distortion))
     return OK;
   // each trial (a split judged) is reported, and can be canceled
-  auto relax = [&](Joint_state& s) {
+  // (each trial solves the charts its cut runs through: relax_charts())
+  auto relax = [&](Joint_state& s, const std::vector<char>& faces) {
     if(settings.progress && !settings.progress({"split", settings.passes, 0, settings.alternations_per_pass(),
                                                 settings.epsilon_end, s.distortion}))
       return ERROR_CANCELED;
-    return relax_map(settings.split.newton_iterations, settings.constrained_tolerance, settings.inner_solver, s);
+    return relax_charts(settings.split.newton_iterations, settings.constrained_tolerance, settings.inner_solver, faces, s);
   };
   auto accept = [&](double before, double after, double added) {
     return bounded ? after < before : before - after >= low_poly_split_gain * added;
   };
+  // On a large mesh every trial is a solve of the whole map: the splits go
+  // in batches there, one per 10k faces (at most 16; greedy_splits.h).
+  Split_settings split_settings = settings.split;
+  if(settings.multiresolution_faces > 0 && state.chart.number_of_faces() > 2 * std::size_t(settings.multiresolution_faces))
+    split_settings.batch = int((std::min)(std::size_t(16), state.chart.number_of_faces() / std::size_t(settings.multiresolution_faces)));
   for(int round = 0; round < 3; ++round)
   {
     Joint_state split = state;
-    Error_code status = relax(split); // the baseline: the map without box
+    Error_code status = relax(split, {}); // the baseline: the map without box
     if(status != OK) return status;
     // under a bound, the map without box must leave room for the box's share of E_d
     const double box_share = (std::max)(0., state.distortion - split.distortion);
     const double stop_at = bounded ? settings.distortion_bound - box_share : 0.;
     int kept = 0;
-    status = split_greedily(surface, settings.split, stop_at, relax, accept, split, kept);
+    status = split_greedily(surface, split_settings, stop_at, relax, accept, split, kept);
     if(status != OK) return status;
     if(kept == 0)
     {

@@ -1,0 +1,132 @@
+// Input classes of models from the wild (issue 43), each written as an OBJ
+// file by a generator of test/wild_input_generators.h and unwrapped by
+// uv_unwrap with its defaults: quads folded over a common diagonal (an edge
+// of four triangles once split), edges shared by four faces, a head with
+// separate eye parts with holes, repeated faces, a repaired soup with
+// degenerate faces and a pinched vertex. Each must unwrap (exit 0, status
+// ok) into a valid atlas: no flipped face, no border crossing, every UV in
+// the unit square, with a warning saying what the input path did. A file
+// where no face is left gets the error's name.
+//
+//   UV_UNWRAP=<uv_unwrap executable> test_wild_inputs
+#include "wild_input_generators.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cut_test;
+
+std::string uv_unwrap_program;
+
+fs::path work_directory()
+{
+  const fs::path dir = fs::temp_directory_path() / "cut_param_wild_inputs";
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// uv_unwrap with its defaults on `soup` written as NAME.obj; returns its
+/// statistics (--stats) and sets `exit_status`.
+nlohmann::json unwrap(const Soup& soup, const std::string& name, int& exit_status)
+{
+  const fs::path dir = work_directory();
+  const fs::path input = dir / (name + ".obj"), output = dir / (name + "_uv.obj"), stats = dir / (name + ".json");
+  fs::remove(stats);
+  EXPECT_TRUE(write_obj(soup, input.string()));
+  const std::string command = "\"" + uv_unwrap_program + "\" \"" + input.string() + "\" -q -o \"" + output.string() +
+                              "\" --stats \"" + stats.string() + "\"";
+  const int status = std::system(command.c_str());
+  exit_status = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(stats);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+/// Unwraps `soup` and checks a valid atlas of at least `charts` charts,
+/// with a warning holding `warning` (if not empty).
+void expect_valid_atlas(const Soup& soup, const std::string& name, std::size_t charts, const std::string& warning)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  int exit_status = -1;
+  const nlohmann::json stats = unwrap(soup, name, exit_status);
+  ASSERT_FALSE(stats.is_discarded()) << name << ": no statistics";
+  EXPECT_EQ(exit_status, 0) << stats.dump();
+  ASSERT_EQ(stats["status"], "ok") << stats.dump();
+  EXPECT_EQ(stats["flipped_faces"], 0);
+  EXPECT_EQ(stats["border_crossings"], 0);
+  EXPECT_EQ(stats["uv_in_unit_square"], true);
+  EXPECT_GE(stats["charts"].get<std::size_t>(), charts);
+  ASSERT_TRUE(stats["distortion"].is_number());
+  EXPECT_GE(stats["distortion"].get<double>(), 4. - 1e-9);
+  if(warning.empty()) return;
+  bool warned = false;
+  for(const auto& w : stats["warnings"]) warned = warned || w.get<std::string>().find(warning) != std::string::npos;
+  EXPECT_TRUE(warned) << "no warning with '" << warning << "': " << stats["warnings"].dump();
+}
+
+TEST(WildInputs, quads_folded_over_a_common_diagonal)
+{
+  // alone, and with a wavy quad grid beside them
+  expect_valid_atlas(folded_quads_soup(), "folded_quads", 1, "triangulated");
+  Soup quads = quad_grid_soup(6, 6);
+  quads.transform([](const Soup::Point& p) { return Soup::Point{p[0], p[1], 0.2 * std::sin(3. * p[0])}; });
+  quads.append(folded_quads_soup().translate(2., 0., 0.));
+  expect_valid_atlas(quads, "quad_grid_and_folded_quads", 2, "triangulated");
+}
+
+TEST(WildInputs, edge_of_four_triangles)
+{
+  // the folded quads split along their common diagonal, and two sheets crossing
+  expect_valid_atlas(folded_quads_soup(false), "folded_quads_split", 1, "repaired");
+  expect_valid_atlas(crossing_sheets_soup(8), "crossing_sheets", 2, "shared by 4 faces");
+}
+
+TEST(WildInputs, separate_parts_with_holes)
+{
+  // a clean mesh: no repair, no warning; three charts at least
+  expect_valid_atlas(head_with_eyes_soup(8), "head_with_eyes", 3, "");
+}
+
+TEST(WildInputs, repeated_faces)
+{
+  expect_valid_atlas(repeated_faces_soup(10), "repeated_faces", 1, "repaired");
+}
+
+TEST(WildInputs, repaired_soup_with_degenerate_faces)
+{
+  expect_valid_atlas(degenerate_soup(8), "degenerate_soup", 2, "degenerate faces");
+}
+
+TEST(WildInputs, no_face_left_is_an_error_with_its_name)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  Soup soup;
+  soup.add_point(0., 0., 0.);
+  soup.add_point(1., 0., 0.);
+  soup.add_triangle(0, 1, 1);
+  soup.add_triangle(1, 0, 0);
+  int exit_status = -1;
+  const nlohmann::json stats = unwrap(soup, "no_face_left", exit_status);
+  ASSERT_FALSE(stats.is_discarded());
+  EXPECT_EQ(exit_status, 1);
+  EXPECT_EQ(stats["status"], "ERROR_EMPTY_MESH") << stats.dump();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  ::testing::InitGoogleTest(&argc, argv);
+  if(const char* program = std::getenv("UV_UNWRAP")) uv_unwrap_program = program;
+  return RUN_ALL_TESTS();
+}
