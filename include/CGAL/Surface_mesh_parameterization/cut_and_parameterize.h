@@ -62,10 +62,13 @@ struct Cut_and_parameterize_result
   /// minimizations: one per Newton iteration, more where the inner solver
   /// reuses a factorization (`inner_solver`)
   std::size_t number_of_solves = 0;
-  /// the part of `newton_iterations`, `number_of_factorizations` and
-  /// `number_of_solves` spent in the alternation's u-steps (the rest: the
-  /// final solves, the trials of splits and zips)
-  std::size_t alternation_newton_iterations = 0, alternation_factorizations = 0, alternation_solves = 0;
+  /// the part of `newton_iterations` spent in the alternation's u-steps (the
+  /// rest: the final solves, the trials of splits and zips)
+  std::size_t alternation_newton_iterations = 0;
+  /// the part of `number_of_factorizations` spent in the alternation's u-steps
+  std::size_t alternation_factorizations = 0;
+  /// the part of `number_of_solves` spent in the alternation's u-steps
+  std::size_t alternation_solves = 0;
   /// factorizations of the v-steps' systems, one per v-step (their symbolic
   /// analysis is done once per pass; not counted above)
   std::size_t v_step_factorizations = 0;
