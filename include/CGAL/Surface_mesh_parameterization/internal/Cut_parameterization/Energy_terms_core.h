@@ -173,13 +173,11 @@ protected:
         if(!(e < current)) return false;
         x.swap(trial);
         current = e;
-        last_step_ = t;
         return true;
       }
     }
     return false;
   }
-  double last_step_ = 0.; // the step length the last successful line search took
 
 public:
   double energy(const UV_vector& x) const

@@ -86,6 +86,19 @@ struct Joint_state
   bool first_u_step_done = false;
   Packing_result packing;
   Joint_timings timings;
+
+  /// Adds the work of one minimization (a Newton_report) to the counts;
+  /// returns it as Solver_counts.
+  template <typename Report>
+  Solver_counts count(const Report& report)
+  {
+    const Solver_counts work{std::size_t(report.iterations), std::size_t(report.factorizations),
+                             std::size_t(report.solves)};
+    newton_iterations += work.iterations;
+    factorizations += work.factorizations;
+    solves += work.solves;
+    return work;
+  }
 };
 
 /// Up to this many faces, the work that runs two trials at once, each on its

@@ -32,10 +32,14 @@ namespace cut {
 
 class Proxy_quasi_newton_solver : public Energy_terms_core
 {
-  // L-BFGS pairs since the last factorization, oldest first
+  // L-BFGS pairs since the last factorization: a ring of `memory` slots
+  // whose vectors keep their storage from one pair to the next (no
+  // allocation inside the iterations); pair k (0: the oldest) is in slot
+  // (first_ + k) % memory
   std::vector<Eigen::VectorXd> s_, y_;
   std::vector<double> rho_;
-  Eigen::VectorXd alpha_buffer_;
+  int first_ = 0, pairs_ = 0;
+  Eigen::VectorXd alpha_, q_, ds_, dy_; // two-loop and new-pair scratch
 
 public:
   /// Curvature pairs kept.
@@ -87,7 +91,7 @@ public:
       else
       {
         if(!gradient_at(x, gradient)) return failed(report, solves_before);
-        add_pair(x - previous_x, gradient - previous_gradient);
+        add_pair(x, previous_x, gradient, previous_gradient);
         if(!quasi_newton_direction(gradient, direction)) return failed(report, solves_before);
         fresh = false;
       }
@@ -133,46 +137,52 @@ private:
 
   void clear_pairs()
   {
-    s_.clear();
-    y_.clear();
-    rho_.clear();
+    first_ = pairs_ = 0;
   }
 
-  /// Keeps (s, y) where the curvature along s is positive enough (the
-  /// energy is not convex: other pairs would break the update's positive
-  /// definiteness).
-  void add_pair(Eigen::VectorXd s, Eigen::VectorXd y)
+  int slot(int k) const { return (first_ + k) % memory; }
+
+  /// Keeps s = x - x', y = g - g' where the curvature along s is positive
+  /// enough (the energy is not convex: other pairs would break the update's
+  /// positive definiteness); the oldest pair goes when the ring is full.
+  void add_pair(const UV_vector& x, const UV_vector& previous_x, const Eigen::VectorXd& g,
+                const Eigen::VectorXd& previous_g)
   {
-    const double sy = s.dot(y);
-    if(!(sy > 1e-10 * s.norm() * y.norm())) return;
-    if(int(s_.size()) == memory)
+    if(s_.empty())
     {
-      s_.erase(s_.begin());
-      y_.erase(y_.begin());
-      rho_.erase(rho_.begin());
+      s_.resize(memory);
+      y_.resize(memory);
+      rho_.resize(memory);
     }
-    s_.push_back(std::move(s));
-    y_.push_back(std::move(y));
-    rho_.push_back(1. / sy);
+    ds_ = x - previous_x;
+    dy_ = g - previous_g;
+    const double sy = ds_.dot(dy_);
+    if(!(sy > 1e-10 * ds_.norm() * dy_.norm())) return;
+    const int k = pairs_ < memory ? slot(pairs_) : first_;
+    s_[k].swap(ds_); // the scratch takes the slot's old storage
+    y_[k].swap(dy_);
+    rho_[k] = 1. / sy;
+    if(pairs_ < memory) ++pairs_;
+    else first_ = (first_ + 1) % memory;
   }
 
   /// L-BFGS two-loop recursion with the factorized proxy as the initial
   /// inverse Hessian: direction = -H g.
   bool quasi_newton_direction(const Eigen::VectorXd& gradient, Eigen::VectorXd& direction)
   {
-    const int m = int(s_.size());
-    alpha_buffer_.resize(m);
-    Eigen::VectorXd q = gradient;
-    for(int i = m - 1; i >= 0; --i)
+    alpha_.resize(pairs_);
+    q_ = gradient;
+    for(int i = pairs_ - 1; i >= 0; --i)
     {
-      alpha_buffer_[i] = rho_[i] * s_[i].dot(q);
-      q -= alpha_buffer_[i] * y_[i];
+      const int k = slot(i);
+      alpha_[i] = rho_[k] * s_[k].dot(q_);
+      q_ -= alpha_[i] * y_[k];
     }
-    if(!solve(q, direction)) return false;
-    for(int i = 0; i < m; ++i)
+    if(!solve(q_, direction)) return false;
+    for(int i = 0; i < pairs_; ++i)
     {
-      const double beta = rho_[i] * y_[i].dot(direction);
-      direction += (alpha_buffer_[i] - beta) * s_[i];
+      const int k = slot(i);
+      direction += (alpha_[i] - rho_[k] * y_[k].dot(direction)) * s_[k];
     }
     direction = -direction;
     return true;

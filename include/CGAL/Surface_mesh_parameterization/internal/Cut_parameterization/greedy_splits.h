@@ -227,9 +227,7 @@ inline Error_code relax_charts(int iterations, double tolerance, Inner_solver so
   Distortion_minimizer minimizer(solved_mesh, std::vector<double>(solved_mesh.number_of_faces(), 1.), false, 0., 0.,
                                  solver);
   const Newton_report report = minimizer.minimize(y, iterations, tolerance);
-  s.newton_iterations += report.iterations;
-  s.factorizations += report.factorizations;
-  s.solves += report.solves;
+  s.count(report);
   if(whole) s.x = y;
   else
     for(std::size_t v = 0; v < full_vertex.size(); ++v)

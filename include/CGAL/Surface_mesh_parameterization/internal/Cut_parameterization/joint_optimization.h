@@ -141,11 +141,7 @@ inline Error_code u_step(const Joint_settings& settings, int alternation, Distor
   const int cap = alternation == 0 ? settings.max_newton_iterations
                                     : (std::min)(settings.max_newton_iterations, later_cap);
   const Newton_report report = minimizer.minimize(state.x, cap, settings.alternation_tolerance);
-  state.newton_iterations += report.iterations;
-  state.factorizations += report.factorizations;
-  state.solves += report.solves;
-  state.u_step_work += Solver_counts{std::size_t(report.iterations), std::size_t(report.factorizations),
-                                     std::size_t(report.solves)};
+  state.u_step_work += state.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
@@ -207,9 +203,7 @@ inline Error_code final_minimization(const Joint_settings& settings, bool inject
                                  settings.inner_solver);
   const double tolerance = injective || boxed ? settings.constrained_tolerance : settings.final_tolerance;
   const Newton_report report = minimizer.minimize(state.x, settings.max_newton_iterations, tolerance);
-  state.newton_iterations += report.iterations;
-  state.factorizations += report.factorizations;
-  state.solves += report.solves;
+  state.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
@@ -411,9 +405,7 @@ inline Error_code relax_map(int iterations, double tolerance, Inner_solver solve
 {
   Distortion_minimizer minimizer(s.chart, std::vector<double>(s.chart.number_of_faces(), 1.), false, 0., 0., solver);
   const Newton_report report = minimizer.minimize(s.x, iterations, tolerance);
-  s.newton_iterations += report.iterations;
-  s.factorizations += report.factorizations;
-  s.solves += report.solves;
+  s.count(report);
   s.distortion = mean_distortion(s.chart, s.x);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
