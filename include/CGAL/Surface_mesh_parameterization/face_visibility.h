@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -55,6 +56,11 @@ inline std::vector<std::array<double, 3>> hemisphere_directions(int n)
   }
   return d;
 }
+
+/// Rays cast between two reports of face_visibility()'s progress callback
+/// (a block of faces: 1,024 at the default 64 rays per face), so that a
+/// cancellation waits for about as much work whatever the number of rays.
+constexpr std::size_t visibility_rays_per_report = 65536;
 
 } // namespace cut
 } // namespace internal
@@ -81,11 +87,21 @@ inline std::vector<std::array<double, 3>> hemisphere_directions(int n)
 ///   - `number_of_rays`: rays per face, ≥ 1 (default 64)
 ///   - `maximum_distance`: farther faces do not block (default: no limit)
 ///   - `vertex_point_map`: the points of the vertices (default: the mesh's)
+///   - `progress_callback`: callable as `bool(double)`, e.g.
+///     `std::function<bool(double)>`: called with the fraction of the faces
+///     done, in [0, 1]: 0 before the work starts, then after each block of
+///     faces (65,536 rays: 1,024 faces at 64 rays), the last time with 1;
+///     one call at a time, from the calling thread. Returning false stops
+///     the computation with `ERROR_CANCELED`, `visibility` unchanged (the
+///     same convention as `cut_and_parameterize()`'s `progress_callback`,
+///     whose reports are a `Cut_and_parameterize_progress`). Default: none
 ///
 /// \return `OK`; `ERROR_EMPTY_MESH` with no face;
 ///         `ERROR_NON_TRIANGULAR_MESH` if a face is not a triangle;
 ///         `ERROR_WRONG_PARAMETER` for fewer than 1 ray or a maximum
-///         distance that is not positive.
+///         distance that is not positive; `ERROR_CANCELED` if the
+///         `progress_callback` returned false. On error `visibility` is
+///         left unchanged.
 template <typename TriangleMesh, typename VisibilityMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code face_visibility(const TriangleMesh& mesh, VisibilityMap visibility,
@@ -105,11 +121,14 @@ Error_code face_visibility(const TriangleMesh& mesh, VisibilityMap visibility,
   const int rays = choose_parameter(get_parameter(np, internal_np::number_of_rays), 64);
   const double max_distance = choose_parameter(get_parameter(np, internal_np::maximum_distance),
                                                std::numeric_limits<double>::infinity());
+  const std::function<bool(double)> progress =
+    choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
   if(rays < 1 || !(max_distance > 0.)) return ERROR_WRONG_PARAMETER;
   std::vector<face_descriptor> face_list(faces(mesh).begin(), faces(mesh).end());
   if(face_list.empty()) return ERROR_EMPTY_MESH;
   for(face_descriptor f : face_list)
     if(CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size() != 3) return ERROR_NON_TRIANGULAR_MESH;
+  if(progress && !progress(0.)) return ERROR_CANCELED;
 
   Tree tree(faces(mesh).first, faces(mesh).second, mesh, vpm);
   tree.build();
@@ -158,14 +177,23 @@ Error_code face_visibility(const TriangleMesh& mesh, VisibilityMap visibility,
     }
     result[i] = double(seen) / double(rays);
   };
+  // by blocks, a report after each (without callback: one block)
+  const std::size_t n = face_list.size();
+  const std::size_t block =
+    progress ? (std::max)(std::size_t(1), internal::cut::visibility_rays_per_report / std::size_t(rays)) : n;
+  for(std::size_t first = 0; first < n; first += block)
+  {
+    const std::size_t last = (std::min)(n, first + block);
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, face_list.size()),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t i = r.begin(); i != r.end(); ++i) face_work(i);
-                    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for(std::size_t i = r.begin(); i != r.end(); ++i) face_work(i);
+                      });
 #else
-  for(std::size_t i = 0; i < face_list.size(); ++i) face_work(i);
+    for(std::size_t i = first; i < last; ++i) face_work(i);
 #endif
+    if(progress && !progress(double(last) / double(n))) return ERROR_CANCELED;
+  }
   for(std::size_t i = 0; i < face_list.size(); ++i) put(visibility, face_list[i], result[i]);
   return OK;
 }
