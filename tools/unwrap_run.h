@@ -27,7 +27,8 @@ namespace uv_unwrap {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
-/// Called with each progress report of the library; false cancels.
+/// Called with each progress report of the library (cut_and_parameterize()'s,
+/// and face_visibility()'s as phase "visibility"); false cancels.
 using Progress = std::function<bool(const SMP::Cut_and_parameterize_progress&)>;
 
 struct Run_summary
@@ -125,7 +126,20 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   if(visibility_wanted)
   {
     const auto start = std::chrono::steady_clock::now();
-    const SMP::Error_code status = SMP::face_visibility(mesh, visibility);
+    // its reports go to `progress` too, as phase "visibility" (`alternation`
+    // the faces done of `alternations_per_pass`): canceling there (Ctrl-C,
+    // Python's progress) stops it with ERROR_CANCELED
+    const std::size_t face_count = num_faces(mesh);
+    const std::function<bool(double)> visibility_progress = [&](double done) {
+      if(!progress) return true;
+      SMP::Cut_and_parameterize_progress report;
+      report.phase = "visibility";
+      report.alternation = int(std::lround(done * double(face_count)));
+      report.alternations_per_pass = int(face_count);
+      return progress(report);
+    };
+    const SMP::Error_code status =
+      SMP::face_visibility(mesh, visibility, SMP::parameters::progress_callback(visibility_progress));
     if(status != SMP::OK)
       throw Failure(std::string("visibility failed: ") + SMP::error_message(status), SMP::error_name(status));
     if(options.hide_seams > 0.) SMP::visibility_face_lambda(mesh, visibility, face_lambda, options.hide_seams);

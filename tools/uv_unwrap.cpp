@@ -343,6 +343,11 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
       if(interrupted) return false; // Ctrl-C: ERROR_CANCELED
       if(quiet) return true;
       const std::string phase = p.phase;
+      if(phase == "visibility") // reported per block of faces: one line, at the start
+      {
+        if(p.alternation == 0) std::cerr << "  visibility: " << p.alternations_per_pass << " faces" << std::endl;
+        return true;
+      }
       std::cerr << "  " << phase << ":";
       if(phase == "alternate" || phase == "cut") std::cerr << " pass " << p.pass + 1 << ",";
       if(phase == "alternate")
