@@ -242,6 +242,24 @@ def test_progress_reports_and_cancel(cap):
         uv_unwrap.unwrap(*cap, progress=fail)
 
 
+def test_progress_cancels_the_visibility_phase(cap):
+    phases = []
+    uv_unwrap.unwrap(*cap, hide_seams=6, progress=lambda phase, **info: phases.append((phase, info)))
+    visibility = [info for p, info in phases if p == "visibility"]
+    assert phases[0][0] == "visibility" and phases[len(visibility)][0] == "initialize"
+    assert visibility[0]["alternation"] == 0 and visibility[-1]["alternation"] == visibility[-1]["alternations"]
+
+    calls = []
+
+    def stop_in_visibility(phase, **info):
+        calls.append(phase)
+        return phase != "visibility"
+
+    with pytest.raises(uv_unwrap.Cancelled) as info:
+        uv_unwrap.unwrap(*cap, hide_seams=6, progress=stop_in_visibility)
+    assert info.value.name == "ERROR_CANCELED" and calls == ["visibility"]
+
+
 def test_ctrl_c_cancels():
     V, F = spherical_cap(rings=40, segments=120)  # a few seconds of work
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
