@@ -64,10 +64,11 @@ TEST(Determinism_large, default_mode_above_the_metis_threshold)
 // above the bound, splits judged (the "split" reports of the split trials
 // beyond their two baselines: 9 in all), seams cut, the bound met; and that
 // the number of split reports is the same for every thread count.
-// Measured (Release, 2 cores shared with another build, load 4): 24 s of
-// CPU for the whole test (the three runs, their checks and the run without
-// bound; 18 s user, 6 s system: OpenBLAS's threads waiting), 13.5 s with
-// OPENBLAS_NUM_THREADS=1; a run alone 4.5 s of CPU.
+// Measured (Release, 2 cores shared with another build): 15.6 s of CPU for
+// the whole test (the three runs, their checks and the run without bound;
+// 14.1 s user, 1.4 s system) at load 2.6; 24 s at load 4 (18 s user, 6 s
+// system: OpenBLAS's threads waiting), 13.5 s there with
+// OPENBLAS_NUM_THREADS=1; a bounded run alone 4.5 s of CPU.
 TEST(Determinism_large, bound_mode_above_the_cholmod_threshold)
 {
   const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(40, 102, 1., 0.2));
