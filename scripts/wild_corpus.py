@@ -19,7 +19,7 @@ Needs python3 with numpy (Debian: /usr/bin/python3 with python3-numpy).
 
   /usr/bin/python3 scripts/wild_corpus.py [--meshes DIR...] [--damage holes,dup,...]
       [--max-faces N] [--timeout S] [--work DIR] [--uv-unwrap EXE] [--metrics uv_metrics.py]
-      [--filter SUBSTRING] [--skip NAME,...] [--after NAME] [--every K]
+      [--filter SUBSTRING] [--skip NAME,...] [--after NAME] [--every K] [--keep]
 
 Defaults: build/data/meshes (CGAL's data set, extracted by the build) and ../shared/meshes,
 build/bin/uv_unwrap, ../shared/tools/uv_metrics.py, build/wild_corpus, all damages, meshes
@@ -325,6 +325,7 @@ def main():
     ap.add_argument('--after', default='', help='only the meshes whose name sorts after this (to resume a run)')
     ap.add_argument('--every', type=int, default=1, help='every K-th mesh only (a quicker sample)')
     ap.add_argument('--json', default='', help='also write the rows to this file')
+    ap.add_argument('--keep', action='store_true', help='keep the damaged meshes in the work directory')
     args = ap.parse_args()
     if args.metrics and not os.path.exists(args.metrics):
         args.metrics = ''
@@ -369,7 +370,8 @@ def main():
             print(line(r), flush=True)
             if args.json:  # after each run, so that an interrupted run keeps its rows
                 json.dump(rows, open(args.json, 'w'), indent=1)
-            os.remove(mesh_file)
+            if not args.keep:
+                os.remove(mesh_file)
     ok = [r for r in rows if r.get('status') == 'ok']
     bad = [r for r in rows if r.get('status') != 'ok' or r.get('flips') or r.get('crossings') or not r.get('unit')]
     print('\n%d runs: %d ok, %d not a valid atlas or failed; E_d above 4.6: %d; above 30 s: %d' % (
