@@ -143,6 +143,29 @@ inline Soup degenerate_soup(int n = 8)
   return s.remove_unused_points();
 }
 
+/// A unit square (two triangles) with `pages` thin triangles hung on its
+/// diagonal, as a scan or a boolean leaves fins: one edge of pages + 2
+/// faces. Each thin triangle has its apex near the diagonal's midpoint, at
+/// a height of 1-3% of the diagonal's length, so that the repair leaves it
+/// a chart of its own that only a sliver of E_d 4 maps without distortion.
+inline Soup sliver_book_soup(int pages = 17)
+{
+  Soup s;
+  const std::size_t a = s.add_point(0., 0., 0.), b = s.add_point(1., 0., 0.), c = s.add_point(1., 1., 0.),
+                    d = s.add_point(0., 1., 0.);
+  s.add_triangle(a, b, c);
+  s.add_triangle(a, c, d);
+  for(int i = 0; i < pages; ++i)
+  {
+    const double angle = 2. * M_PI * (i + 0.5) / pages, height = 0.015 + 0.01 * (i % 3);
+    const double t = 0.45 + 0.1 * double(i) / pages; // along the diagonal
+    // off the diagonal: in the direction (1, -1, 0) / sqrt 2 and z
+    const double off = height * std::cos(angle) / std::sqrt(2.), up = height * std::sin(angle);
+    s.add_triangle(a, c, s.add_point(t + off, t - off, up));
+  }
+  return s;
+}
+
 /// Writes `soup` as an OBJ file (vertices and faces, 1-based); false on failure.
 inline bool write_obj(const Soup& soup, const std::string& filename)
 {

@@ -53,25 +53,39 @@ nlohmann::json unwrap(const Soup& soup, const std::string& name, int& exit_statu
 }
 
 /// Unwraps `soup` and checks a valid atlas of at least `charts` charts,
-/// with a warning holding `warning` (if not empty).
-void expect_valid_atlas(const Soup& soup, const std::string& name, std::size_t charts, const std::string& warning)
+/// with a warning holding `warning` (if not empty); returns the statistics.
+nlohmann::json expect_valid_atlas(const Soup& soup, const std::string& name, std::size_t charts,
+                                  const std::string& warning)
 {
-  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  if(uv_unwrap_program.empty())
+  {
+    ADD_FAILURE() << "set UV_UNWRAP to the uv_unwrap executable";
+    return {};
+  }
   int exit_status = -1;
   const nlohmann::json stats = unwrap(soup, name, exit_status);
-  ASSERT_FALSE(stats.is_discarded()) << name << ": no statistics";
+  if(stats.is_discarded())
+  {
+    ADD_FAILURE() << name << ": no statistics";
+    return stats;
+  }
   EXPECT_EQ(exit_status, 0) << stats.dump();
-  ASSERT_EQ(stats["status"], "ok") << stats.dump();
+  if(stats["status"] != "ok")
+  {
+    ADD_FAILURE() << stats.dump();
+    return stats;
+  }
   EXPECT_EQ(stats["flipped_faces"], 0);
   EXPECT_EQ(stats["border_crossings"], 0);
   EXPECT_EQ(stats["uv_in_unit_square"], true);
   EXPECT_GE(stats["charts"].get<std::size_t>(), charts);
-  ASSERT_TRUE(stats["distortion"].is_number());
-  EXPECT_GE(stats["distortion"].get<double>(), 4. - 1e-9);
-  if(warning.empty()) return;
+  EXPECT_TRUE(stats["distortion"].is_number());
+  if(stats["distortion"].is_number()) EXPECT_GE(stats["distortion"].get<double>(), 4. - 1e-9);
+  if(warning.empty()) return stats;
   bool warned = false;
   for(const auto& w : stats["warnings"]) warned = warned || w.get<std::string>().find(warning) != std::string::npos;
   EXPECT_TRUE(warned) << "no warning with '" << warning << "': " << stats["warnings"].dump();
+  return stats;
 }
 
 TEST(WildInputs, quads_folded_over_a_common_diagonal)
@@ -89,6 +103,17 @@ TEST(WildInputs, edge_of_four_triangles)
   // the folded quads split along their common diagonal, and two sheets crossing
   expect_valid_atlas(folded_quads_soup(false), "folded_quads_split", 1, "repaired");
   expect_valid_atlas(crossing_sheets_soup(8), "crossing_sheets", 2, "shared by 4 faces");
+}
+
+TEST(WildInputs, thin_fins_on_one_edge_map_without_distortion)
+{
+  // 17 thin triangles on the diagonal of a square: charts of one face each,
+  // which a single triangle maps isometrically (E_d 4). The border barrier
+  // once held each apex off its own face's edge: E_d 10.7 (in.off of CGAL's
+  // data set with such fins); measured now 4.00001.
+  const nlohmann::json stats = expect_valid_atlas(sliver_book_soup(17), "sliver_book", 2, "repaired");
+  ASSERT_TRUE(stats["distortion"].is_number());
+  EXPECT_LE(stats["distortion"].get<double>(), 4.001);
 }
 
 TEST(WildInputs, separate_parts_with_holes)

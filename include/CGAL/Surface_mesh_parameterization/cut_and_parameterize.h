@@ -375,7 +375,7 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// edges and the λ map respected), kept while each lowers E_d by at least
 /// 0.15 per unit of E_s it adds; then the final solve runs again. A map
 /// with E_d between 4.6 and 5 is split the same way until E_d is at most
-/// 4.6. Not with
+/// 4.6, on meshes of at most twice `multiresolution_faces` faces. Not with
 /// `number_of_passes(0)` (the seams are then the given ones only).
 ///
 /// Without `distortion_bound`, where the alternation ran on the mesh itself

@@ -203,6 +203,11 @@ class Border_barrier_term : public Energy_term
   std::vector<int> segment_chart_;
   std::vector<int> points_;                  // UV vertices on the border
   std::vector<int> point_chart_;
+  // per segment: the third vertex of its face, which reaches the segment
+  // only by flipping that face (the distortion term's step bound rules it
+  // out): no pair, or a thin border triangle (a fin, a sliver chart) would
+  // be held fat by the barrier (a 19-face book of slivers: E_d 10.7 -> 4.0)
+  std::vector<int> segment_apex_;
   std::vector<int> point_of_;                // per UV vertex: its index in points_, or -1
   int number_of_charts_ = 0;
   double epsilon_ = 0.;                      // barrier distance where the border is not squashed
@@ -265,7 +270,7 @@ class Border_barrier_term : public Energy_term
     for_each_overlapping_box_pair(point_boxes, segment_boxes, [&](int i, int j) {
       const int v = points_[i];
       const auto& seg = segments_[j];
-      if(point_chart_[i] == segment_chart_[j] && v != seg[0] && v != seg[1]) f(v, j);
+      if(point_chart_[i] == segment_chart_[j] && v != seg[0] && v != seg[1] && v != segment_apex_[j]) f(v, j);
     });
   }
 
@@ -304,6 +309,7 @@ public:
         const int a = mesh.faces[f][k], b = mesh.faces[f][(k+1)%3];
         if(directed.count(directed_edge_key(b, a))) continue;
         segments_.push_back({a, b});
+        segment_apex_.push_back(mesh.faces[f][(k+2)%3]);
         segment_chart_.push_back(chart[f]);
         epsilon_ += mesh.edge_length(f, k);
         chart_of_point[a] = chart_of_point[b] = chart[f];
