@@ -131,6 +131,21 @@ TYPED_TEST(Low_poly, cgal_low_poly_models)
   }
 }
 
+namespace {
+
+/// `surface` indexed from `mesh`, and `state` its uncut Tutte map (one
+/// circle per component) with its E_d: the start of the split tests.
+void uncut_tutte_start(const Surface_mesh& mesh, ic::Indexed_surface<Surface_mesh>& surface, ic::Joint_state& state)
+{
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  state.is_cut.assign(surface.edges.size(), 0);
+  ic::build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
+  state.distortion = ic::mean_distortion(state.chart, state.x);
+}
+
+} // namespace
+
 // One split of a hemisphere's Tutte map among the three most distorted
 // vertices, judged by a stand-in solve that makes the second candidate
 // lower E_d 100 times more per unit of seam length than the others.
@@ -139,12 +154,8 @@ TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
   Surface_mesh mesh;
   build_mesh(hemisphere_soup(8, 24), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
   ic::Joint_state start;
-  start.is_cut.assign(surface.edges.size(), 0);
-  ic::build_chart_mesh(surface, start.is_cut, start.chart, start.corner_uv);
-  ASSERT_TRUE(ic::disk_charts_embedding(start.chart, start.x) == ic::Embedding_status::OK);
-  start.distortion = ic::mean_distortion(start.chart, start.x);
+  ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, start));
 
   for(bool best : {false, true})
   {
@@ -188,12 +199,8 @@ TEST(Greedy_splits, a_batch_is_cut_and_judged_in_one_trial)
   Surface_mesh mesh;
   build_mesh(hemisphere_soup(8, 24), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
   ic::Joint_state state;
-  state.is_cut.assign(surface.edges.size(), 0);
-  ic::build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
-  ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
-  state.distortion = ic::mean_distortion(state.chart, state.x);
+  ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, state));
   ic::Split_settings settings;
   settings.max_splits = 4;
   settings.batch = 4;
@@ -221,11 +228,8 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
   Surface_mesh mesh;
   build_mesh(two_components_soup(6), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
   ic::Joint_state s;
-  s.is_cut.assign(surface.edges.size(), 0);
-  ic::build_chart_mesh(surface, s.is_cut, s.chart, s.corner_uv);
-  ASSERT_TRUE(ic::disk_charts_embedding(s.chart, s.x) == ic::Embedding_status::OK); // circles: distorted
+  ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, s)); // circles: distorted
   int charts = 0;
   const std::vector<int> chart_of_face = ic::chart_of_faces(s.chart, charts);
   ASSERT_EQ(charts, 2);
