@@ -87,6 +87,22 @@ struct Joint_state
   Packing_result packing;
   Joint_timings timings;
 
+  /// The counts of the inner solver's work (iterations, factorizations, solves).
+  Solver_counts work() const { return {newton_iterations, factorizations, solves}; }
+  void set_work(const Solver_counts& w)
+  {
+    newton_iterations = w.iterations;
+    factorizations = w.factorizations;
+    solves = w.solves;
+  }
+  /// Adds the counts of `other` (a trial, or a state solved beside this one).
+  void add_work(const Joint_state& other)
+  {
+    newton_iterations += other.newton_iterations;
+    factorizations += other.factorizations;
+    solves += other.solves;
+  }
+
   /// Adds the work of one minimization (a Newton_report) to the counts;
   /// returns it as Solver_counts.
   template <typename Report>

@@ -67,9 +67,7 @@ inline Error_code solve_within_bound(const Joint_settings& settings, bool from_t
   if(kept) state = std::move(candidate);
   else
   {
-    state.newton_iterations = candidate.newton_iterations;
-    state.factorizations = candidate.factorizations;
-    state.solves = candidate.solves;
+    state.set_work(candidate.work());
   }
   return OK;
 }
@@ -93,9 +91,7 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
   Error_code status = merge_greedily(surface, settings.merge, keep, relax,
                                      [&](double, double after) { return after <= bound; }, merged, steps);
   if(status != OK) return status;
-  state.newton_iterations = merged.newton_iterations; // the trials' work
-  state.factorizations = merged.factorizations;
-  state.solves = merged.solves;
+  state.set_work(merged.work()); // the trials' work
   bool kept = false;
   for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < 3 && !kept; k /= 2, ++tries)
   {
@@ -442,9 +438,9 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
       newton += s.newton_iterations;
       factorizations += s.factorizations;
       solves += s.solves;
-      s.newton_iterations = s.factorizations = s.solves = 0;
+      s.set_work({});
     };
-    for(Joint_state& c : candidates) c.newton_iterations = c.factorizations = c.solves = 0;
+    for(Joint_state& c : candidates) c.set_work({});
     std::vector<Error_code> statuses(candidates.size(), OK);
     auto shorten = [&](std::size_t i) {
       if((statuses[i] = straighten_under_bound(surface, unboxed, user_cut, candidates[i])) == OK

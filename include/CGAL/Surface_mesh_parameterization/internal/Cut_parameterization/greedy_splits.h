@@ -284,21 +284,17 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
       if(chosen.size() > 1)
       {
         Joint_state trial = state;
-        trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
+        trial.set_work({}); // its own work
         std::vector<Cut_path> cuts;
         for(std::size_t i : chosen) cuts.push_back(paths[i]);
         apply_cuts(surface, cuts, trial);
         const Error_code status = solve(trial, faces_on_new_cuts(surface, state.is_cut, trial.is_cut));
         if(status != OK) return status;
-        state.newton_iterations += trial.newton_iterations;
-        state.factorizations += trial.factorizations;
-        state.solves += trial.solves;
+        state.add_work(trial);
         const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
         if(added > 0. && accept(state.distortion, trial.distortion, added))
         {
-          trial.newton_iterations = state.newton_iterations;
-          trial.factorizations = state.factorizations;
-          trial.solves = state.solves;
+          trial.set_work(state.work());
           state = std::move(trial);
           kept += int(chosen.size()) - 1; // the loop counts one
           continue;
@@ -312,16 +308,14 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     // the trial of candidate i: `state` cut along its path, solved
     auto judge = [&](std::size_t i, Joint_state& trial) {
       trial = state;
-      trial.newton_iterations = trial.factorizations = trial.solves = 0; // its own work
+      trial.set_work({}); // its own work
       apply_cuts(surface, {paths[i]}, trial);
       return solve(trial, faces_on_new_cuts(surface, state.is_cut, trial.is_cut));
     };
     std::size_t best_index = tried; // the candidate of `best` (the first of equal gains wins)
     // its work counted whatever is kept, then kept if it is accepted and the best so far
     auto weigh = [&](Joint_state& trial, std::size_t index) {
-      state.newton_iterations += trial.newton_iterations;
-      state.factorizations += trial.factorizations;
-      state.solves += trial.solves;
+      state.add_work(trial);
       const double added = (seam_length_3d(surface, trial.is_cut) - seams) / unit;
       // (a path whose cut could not keep the charts disks is not cut: added 0)
       if(added > 0. && accept(state.distortion, trial.distortion, added))
@@ -392,9 +386,7 @@ Error_code split_greedily(const Surface& surface, const Split_settings& split, d
     const bool split_kept = best_gain >= 0.;
     if(split_kept)
     {
-      best.newton_iterations = state.newton_iterations;
-      best.factorizations = state.factorizations;
-      best.solves = state.solves;
+      best.set_work(state.work());
       state = std::move(best);
     }
     if(!split_kept) break;

@@ -395,9 +395,7 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
   auto distortion = [&](const Joint_state& s, const Unboxed_final_map& u) {
     return solved_through ? mean_distortion(s.chart, s.x) : u.distortion;
   };
-  state.newton_iterations += rerouted.newton_iterations;
-  state.factorizations += rerouted.factorizations;
-  state.solves += rerouted.solves;
+  state.add_work(rerouted);
   if(second == OK
      && distortion(rerouted, rerouted_unboxed) <= distortion(state, unboxed) + settings.rerouting_allowance)
   {
@@ -503,9 +501,7 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     if(status != OK) return status;
     if(kept == 0)
     {
-      state.newton_iterations = split.newton_iterations; // the trials' work
-      state.factorizations = split.factorizations;
-      state.solves = split.solves;
+      state.set_work(split.work()); // the trials' work
       return OK;
     }
     state = std::move(split);
@@ -610,9 +606,7 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   coarse_state.rules.forbidden = coarse.forbidden;
   coarse_state.rules.edge_factor = edge_lambda_factors(coarse.surface, coarse.face_lambda);
   status = decide_cuts(coarse.surface, coarse.face_lambda, coarse_settings, coarse_state);
-  state.newton_iterations += coarse_state.newton_iterations;
-  state.factorizations += coarse_state.factorizations;
-  state.solves += coarse_state.solves;
+  state.add_work(coarse_state);
   state.u_step_work += coarse_state.u_step_work;
   state.v_step_factorizations += coarse_state.v_step_factorizations;
   state.initial_distortion = coarse_state.initial_distortion;
