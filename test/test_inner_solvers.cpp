@@ -139,3 +139,57 @@ TEST(InnerSolvers, quasi_newton_result_does_not_depend_on_the_thread_count)
   GTEST_SKIP() << "built without TBB: one thread only";
 }
 #endif
+
+// The slow-tail rule on given energies: it stops at the first step, from
+// `after` on, where the energy fell by less than `ratio` of itself over the
+// last `window` steps; never while it falls faster, never when `after` is 0.
+TEST(InnerSolvers, slow_tail_rule_stops_where_the_energy_crawls)
+{
+  const ic::Slow_tail rule{100, 20, 1e-3};
+  ic::Tail_watch fast(rule), slow(rule), off(ic::Slow_tail{0, 20, 1e-3}), late(rule);
+  double e_fast = 1., e_slow = 1., e_late = 1.;
+  for(int step = 1; step <= 400; ++step)
+  {
+    e_fast *= 0.999;  // 2% over 20 steps
+    e_slow *= 0.9999; // 0.2% over 20 steps
+    EXPECT_FALSE(fast.crawls(e_fast)) << step;
+    EXPECT_FALSE(off.crawls(1.)) << step;
+    // the crawl starts at step 150; the 20 steps before step 170 all crawl
+    e_late *= step < 150 ? 0.999 : 0.99999;
+    const bool late_stops = late.crawls(e_late);
+    EXPECT_EQ(late_stops, step >= 169) << step;
+    const bool slow_stops = slow.crawls(e_slow);
+    EXPECT_FALSE(slow_stops) << step;
+  }
+  // a constant energy crawls as soon as `after` is reached
+  ic::Tail_watch flat(rule);
+  for(int step = 1; step <= 120; ++step) EXPECT_EQ(flat.crawls(2.), step >= 100) << step;
+}
+
+// Both solvers stop under the rule with the status SLOW_TAIL after the
+// steps it allows, the map flip-free and lower than at the start; without
+// it, the same minimization runs on to convergence.
+TEST(InnerSolvers, both_solvers_stop_in_a_slow_tail)
+{
+  Solver_chart chart;
+  make_solver_chart(cone_soup(6, 16, 1., 1.5), chart);
+  const std::vector<double> weights(chart.mesh.number_of_faces(), 1.);
+  // from the third step on, stop unless a step gains a million times the energy left
+  const ic::Slow_tail rule{3, 1, 1e6};
+  for(SMP::Inner_solver solver : {SMP::Inner_solver::NEWTON, SMP::Inner_solver::PROXY_QUASI_NEWTON})
+  {
+    ic::UV_vector stopped = chart.tutte, converged = chart.tutte;
+    ic::Distortion_minimizer a(chart.mesh, weights, false, 0., 0., solver), b(chart.mesh, weights, false, 0., 0., solver);
+    const ic::Newton_report with_rule = a.minimize(stopped, 2000, 1e-9, rule);
+    const ic::Newton_report without = b.minimize(converged, 2000, 1e-9);
+    ASSERT_EQ(int(with_rule.status), int(ic::Newton_status::SLOW_TAIL));
+    // (a quasi-Newton iteration may end without a step: a stale direction refused)
+    if(solver == SMP::Inner_solver::NEWTON) EXPECT_EQ(with_rule.iterations, 3);
+    EXPECT_TRUE(with_rule.iterations >= 3);
+    EXPECT_EQ(ic::number_of_flipped_faces(chart.mesh, stopped), 0);
+    EXPECT_TRUE(with_rule.energy < with_rule.initial_energy);
+    ASSERT_EQ(int(without.status), int(ic::Newton_status::CONVERGED));
+    EXPECT_TRUE(without.iterations > with_rule.iterations) << without.iterations;
+    EXPECT_TRUE(without.energy <= with_rule.energy);
+  }
+}

@@ -40,6 +40,7 @@ public:
     if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
 
     Eigen::VectorXd gradient(x.size()), direction;
+    Tail_watch tail(settings.slow_tail);
     report.status = Newton_status::MAX_ITERATIONS;
     for(; report.iterations < settings.max_iterations; ++report.iterations)
     {
@@ -69,6 +70,12 @@ public:
       if(!line_search(x, direction, slope, report.energy))
       {
         report.status = Newton_status::STALLED;
+        break;
+      }
+      if(tail.crawls(report.energy))
+      {
+        ++report.iterations; // this step counts
+        report.status = Newton_status::SLOW_TAIL;
         break;
       }
     }

@@ -72,6 +72,7 @@ public:
     UV_vector previous_x;
     bool fresh = false;          // the factorization is of the Hessian at x
     double first_decrease = 0.;  // of the first step after the last factorization
+    Tail_watch tail(settings.slow_tail);
     report.status = Newton_status::MAX_ITERATIONS;
     for(; report.iterations < settings.max_iterations; ++report.iterations)
     {
@@ -118,6 +119,12 @@ public:
         }
         have_factor_ = false;
         continue;
+      }
+      if(tail.crawls(report.energy))
+      {
+        ++report.iterations; // this step counts
+        report.status = Newton_status::SLOW_TAIL;
+        break;
       }
       const double decrease = before - report.energy;
       if(fresh) first_decrease = decrease;

@@ -56,11 +56,14 @@ public:
 
   std::vector<double>& weights() { return weights_; }
 
-  Newton_report minimize(UV_vector& x, int max_iterations, double tolerance)
+  /// At most `max_iterations` iterations from x, to `tolerance` (Newton_settings), or
+  /// until the slow-tail rule `slow_tail` stops them (never by default).
+  Newton_report minimize(UV_vector& x, int max_iterations, double tolerance, const Slow_tail& slow_tail = {})
   {
     Newton_settings settings;
     settings.max_iterations = max_iterations;
     settings.tolerance = tolerance;
+    settings.slow_tail = slow_tail;
     settings.energy_scale = term_.weighted_area();
     return proxy_ ? proxy_->minimize(x, settings) : newton_->minimize(x, settings);
   }
