@@ -38,30 +38,6 @@ struct Slow_tail
   double ratio = 1e-3;
 };
 
-/// Watches the energies after the steps of one minimization (a ring of the
-/// last window + 1, allocated once) for Slow_tail's rule.
-class Tail_watch
-{
-  Slow_tail rule_;
-  std::vector<double> ring_;
-  int steps_ = 0;
-
-public:
-  explicit Tail_watch(const Slow_tail& rule)
-    : rule_(rule), ring_(std::size_t((std::max)(rule.window, 0)) + 1, 0.)
-  {}
-
-  /// Records the energy after a step; true if the minimization crawls.
-  bool crawls(double energy)
-  {
-    const std::size_t size = ring_.size();
-    ring_[std::size_t(steps_) % size] = energy;
-    ++steps_;
-    if(rule_.after <= 0 || rule_.window <= 0 || steps_ < rule_.after || steps_ <= rule_.window) return false;
-    return ring_[std::size_t(steps_ - 1 - rule_.window) % size] - energy < rule_.ratio * energy;
-  }
-};
-
 struct Newton_settings
 {
   int max_iterations = 500;
@@ -89,6 +65,40 @@ struct Newton_report
   double initial_energy = 0.;
   double energy = 0.;
   bool ok() const { return status != Newton_status::LINEAR_SOLVE_FAILED && status != Newton_status::NOT_FINITE; }
+};
+
+/// Watches the energies after the steps of one minimization (a ring of the
+/// last window + 1, allocated once) for Slow_tail's rule.
+class Tail_watch
+{
+  Slow_tail rule_;
+  std::vector<double> ring_;
+  int steps_ = 0;
+
+public:
+  explicit Tail_watch(const Slow_tail& rule)
+    : rule_(rule), ring_(std::size_t((std::max)(rule.window, 0)) + 1, 0.)
+  {}
+
+  /// Records the energy after a step; true if the minimization crawls.
+  bool crawls(double energy)
+  {
+    const std::size_t size = ring_.size();
+    ring_[std::size_t(steps_) % size] = energy;
+    ++steps_;
+    if(rule_.after <= 0 || rule_.window <= 0 || steps_ < rule_.after || steps_ <= rule_.window) return false;
+    return ring_[std::size_t(steps_ - 1 - rule_.window) % size] - energy < rule_.ratio * energy;
+  }
+
+  /// After a step of a solver's loop: true (the loop stops) if the
+  /// minimization crawls, `report` then counting that step, SLOW_TAIL.
+  bool stops(Newton_report& report)
+  {
+    if(!crawls(report.energy)) return false;
+    ++report.iterations;
+    report.status = Newton_status::SLOW_TAIL;
+    return true;
+  }
 };
 
 class Energy_terms_core

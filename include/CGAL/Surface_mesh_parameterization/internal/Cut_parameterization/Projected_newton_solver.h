@@ -3,7 +3,8 @@
 // first minimization and again only when a term changes its elements; each
 // iteration assembles, factorizes (or solves by conjugate gradients
 // preconditioned by the last factorization, reuse_factor()), caps the step so
-// that no term becomes inadmissible (no face flips), then backtracks (Armijo).
+// that no term becomes inadmissible (no face flips), then backtracks (Armijo);
+// it stops at convergence, or in a slow tail where the settings ask (Slow_tail).
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 
@@ -72,12 +73,7 @@ public:
         report.status = Newton_status::STALLED;
         break;
       }
-      if(tail.crawls(report.energy))
-      {
-        ++report.iterations; // this step counts
-        report.status = Newton_status::SLOW_TAIL;
-        break;
-      }
+      if(tail.stops(report)) break;
     }
     report.solves = solves_ - solves_before;
     return report;

@@ -120,12 +120,7 @@ public:
         have_factor_ = false;
         continue;
       }
-      if(tail.crawls(report.energy))
-      {
-        ++report.iterations; // this step counts
-        report.status = Newton_status::SLOW_TAIL;
-        break;
-      }
+      if(tail.stops(report)) break;
       const double decrease = before - report.energy;
       if(fresh) first_decrease = decrease;
       else if(decrease < refactorization_ratio * first_decrease) have_factor_ = false;

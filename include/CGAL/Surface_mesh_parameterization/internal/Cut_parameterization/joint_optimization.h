@@ -513,7 +513,7 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     // under a bound, the map without box must leave room for the box's share of E_d
     const double box_share = (std::max)(0., state.distortion - split.distortion);
     const double stop_at = bounded ? settings.distortion_bound - box_share
-                                    : (state.distortion > low_poly_distortion ? 0. : default_distortion_target - box_share);
+                                    : (to_target ? default_distortion_target - box_share : 0.);
     int kept = 0;
     status = split_greedily(surface, split_settings, stop_at, relax, accept, split, kept);
     if(status != OK) return status;
