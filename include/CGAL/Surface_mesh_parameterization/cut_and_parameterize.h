@@ -380,8 +380,9 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// search of `distortion_bound` at 4.6 runs from the same input, and its
 /// result is kept if it meets 4.6 (the splits are judged on maps without the
 /// border barrier, which can cross their own border: CGAL's mpi.off, 180
-/// faces, 5.11 -> 4.59 in 3 charts). Not with `number_of_passes(0)` (the
-/// seams are then the given ones only).
+/// faces, 5.11 -> 4.59 in 3 charts), unless a box is kept whatever it costs
+/// (an explicit `bounding_box_aspect_ratio` or stiffness). Not with
+/// `number_of_passes(0)` (the seams are then the given ones only).
 ///
 /// Without `distortion_bound`, where the alternation ran on the mesh itself
 /// (not on a simplified copy), the final solve of its seams runs alongside

@@ -510,7 +510,9 @@ constexpr std::size_t default_target_search_max_faces = 2000;
 /// solve, from Tutte under the barrier, leaves at 5.11 in one chart (E_s
 /// 13.28); the bound search judges its candidates on valid atlases: 4.59 in
 /// three charts, E_s 12.84 (mpi_triang.off: 5.13, E_s 12.44 -> 4.35, E_s
-/// 10.06). The work and the times of both runs add up.
+/// 10.06). Not where a box is kept whatever it costs (an explicit
+/// `bounding_box_aspect_ratio` or stiffness: its share of E_d is the user's
+/// price, as in the splits). The work and the times of both runs add up.
 template <typename Surface>
 Error_code default_target_joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
                                              const Joint_settings& settings, Joint_state& state)
@@ -518,7 +520,8 @@ Error_code default_target_joint_optimization(const Surface& surface, const std::
   const Joint_state input = state;
   Error_code status = joint_optimization(surface, face_lambda, settings, state);
   if(status != OK || !(state.distortion > default_distortion_target) || settings.distortion_bound > 0.
-     || !settings.greedy_splits || settings.passes == 0 || surface.number_of_faces() > default_target_search_max_faces)
+     || !settings.greedy_splits || settings.passes == 0 || surface.number_of_faces() > default_target_search_max_faces
+     || (final_box_stiffness(settings) > 0. && !std::isfinite(settings.bounding_box_distortion_budget)))
     return status;
   Joint_settings bounded = settings;
   bounded.distortion_bound = default_distortion_target;
