@@ -517,12 +517,13 @@ template <typename Surface>
 Error_code default_target_joint_optimization(const Surface& surface, const std::vector<double>& face_lambda,
                                              const Joint_settings& settings, Joint_state& state)
 {
-  const Joint_state input = state;
+  const bool may_search = settings.distortion_bound <= 0. && settings.greedy_splits && settings.passes > 0
+                          && surface.number_of_faces() <= default_target_search_max_faces
+                          && !(final_box_stiffness(settings) > 0. && !std::isfinite(settings.bounding_box_distortion_budget));
+  Joint_state input;
+  if(may_search) input = state; // the search starts where the first run did
   Error_code status = joint_optimization(surface, face_lambda, settings, state);
-  if(status != OK || !(state.distortion > default_distortion_target) || settings.distortion_bound > 0.
-     || !settings.greedy_splits || settings.passes == 0 || surface.number_of_faces() > default_target_search_max_faces
-     || (final_box_stiffness(settings) > 0. && !std::isfinite(settings.bounding_box_distortion_budget)))
-    return status;
+  if(!may_search || status != OK || !(state.distortion > default_distortion_target)) return status;
   Joint_settings bounded = settings;
   bounded.distortion_bound = default_distortion_target;
   Joint_state search = input;

@@ -495,10 +495,8 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
   };
   // a split pays for its seams (Split_settings::gain), or (under a bound, and
   // toward the default target once none pays) lowers E_d
-  bool any_decrease = bounded;
-  auto accept = [&](double before, double after, double added) {
-    return any_decrease ? after < before : before - after >= settings.split.gain * added;
-  };
+  auto pays = [&](double before, double after, double added) { return before - after >= settings.split.gain * added; };
+  auto lowers = [](double before, double after, double) { return after < before; };
   // On a large mesh every trial is a solve of the whole map: the splits go
   // in batches there, one per 10k faces (at most 16; greedy_splits.h).
   Split_settings split_settings = settings.split;
@@ -519,16 +517,14 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     int kept = 0;
     if(!bounded)
     {
-      any_decrease = false;
       const double stop_at = to_target ? goal - box_share : 0.;
-      status = split_greedily(surface, split_settings, stop_at, relax, accept, split, kept);
+      status = split_greedily(surface, split_settings, stop_at, relax, pays, split, kept);
       if(status != OK) return status;
     }
     if(goal > 0. && split.distortion > goal - box_share)
     {
-      any_decrease = true;
       int more = 0;
-      status = split_greedily(surface, split_settings, goal - box_share, relax, accept, split, more);
+      status = split_greedily(surface, split_settings, goal - box_share, relax, lowers, split, more);
       if(status != OK) return status;
       kept += more;
     }
