@@ -225,6 +225,28 @@ inline Soup hemisphere_soup(int rings, int sectors, double radius = 1.)
   });
 }
 
+/// A finger: a tube of the given radius and length, closed at its tip by a
+/// hemisphere and open at its base circle; the rings run evenly from the
+/// tip (r = 0) to the base. A disk whose Tutte map puts the base on the
+/// circle and squeezes the tube inside it, each ring smaller than the last
+/// by about the same factor: with many more rings than the tube's
+/// circumference holds edges, the tip's faces are crushed by orders of
+/// magnitude (a long bone or limb cut along a short seam).
+inline Soup finger_soup(int rings, int sectors, double radius = 0.5, double length = 4.)
+{
+  const double cap = 0.5 * pi * radius;
+  return polar_disk_soup(rings, sectors, [=](double r, double t) {
+    const double s = r * (cap + length);
+    if(s < cap)
+    {
+      const double phi = s / radius;
+      return Soup::Point{radius * std::sin(phi) * std::cos(t), radius * std::sin(phi) * std::sin(t),
+                         -radius * std::cos(phi)};
+    }
+    return Soup::Point{radius * std::cos(t), radius * std::sin(t), s - cap};
+  });
+}
+
 /// Cone with its apex at (0, 0, height), open along its base circle. A disk
 /// with one interior vertex (the apex) of positive curvature.
 inline Soup cone_soup(int rings, int sectors, double radius = 1., double height = 1.)

@@ -40,6 +40,24 @@ class Distortion_term : public Energy_term
     }
   }
 
+  /// The gradient, and the Hessian of a quadratic model of Psi w.r.t. vec(J) (`model`) carried to the UVs.
+  void add_gradient_and_model(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler& hessian,
+                              Matrix4 (*model)(const Matrix2&)) const
+  {
+    const std::size_t n = mesh_.number_of_faces();
+    face_gradient_.resize(n);
+    face_hessian_.resize(n);
+    parallel_for(n, [&](std::size_t f) {
+      const double w = weights_[f] * mesh_.area[f];
+      const Matrix2 J = mesh_.jacobian(x, f);
+      const auto& B = jacobian_operators_[f];
+      face_gradient_[f] = w * (B.transpose() * symmetric_dirichlet_gradient(J));
+      face_hessian_[f] = w * (B.transpose() * model(J) * B);
+    });
+    scatter_gradient(gradient);
+    for(std::size_t f = 0; f < n; ++f) hessian.add(first_element_ + int(f), face_hessian_[f]);
+  }
+
 public:
   Distortion_term(const Chart_mesh& mesh, const std::vector<double>& weights)
     : mesh_(mesh), weights_(weights)
@@ -82,18 +100,15 @@ public:
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
   {
-    const std::size_t n = mesh_.number_of_faces();
-    face_gradient_.resize(n);
-    face_hessian_.resize(n);
-    parallel_for(n, [&](std::size_t f) {
-      const double w = weights_[f] * mesh_.area[f];
-      const Matrix2 J = mesh_.jacobian(x, f);
-      const auto& B = jacobian_operators_[f];
-      face_gradient_[f] = w * (B.transpose() * symmetric_dirichlet_gradient(J));
-      face_hessian_[f] = w * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
-    });
-    scatter_gradient(gradient);
-    for(std::size_t f = 0; f < n; ++f) hessian.add(first_element_ + int(f), face_hessian_[f]);
+    add_gradient_and_model(x, gradient, hessian, &symmetric_dirichlet_projected_hessian);
+  }
+
+  /// With SLIM's reweighted proxy of each face
+  /// (symmetric_dirichlet_reweighted_proxy_hessian()).
+  void add_gradient_and_reweighted_proxy(const UV_vector& x, Eigen::VectorXd& gradient,
+                                         Hessian_assembler& hessian) const override
+  {
+    add_gradient_and_model(x, gradient, hessian, &symmetric_dirichlet_reweighted_proxy_hessian);
   }
 
   void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override

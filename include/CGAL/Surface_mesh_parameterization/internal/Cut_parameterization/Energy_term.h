@@ -40,6 +40,16 @@ public:
   virtual void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                         Hessian_assembler& hessian) const = 0;
 
+  /// Adds the gradient and the Hessian of the term's reweighted proxy
+  /// (Energy_terms_core::reweighted_start()): a positive definite model
+  /// whose step reaches far from the minimum at once. A term without one
+  /// (barrier, box: their projected Hessians already model them) gives
+  /// add_gradient_and_hessian()'s.
+  virtual void add_gradient_and_reweighted_proxy(const UV_vector& x, Eigen::VectorXd& gradient,
+                                                 Hessian_assembler& hessian) const
+  {
+    add_gradient_and_hessian(x, gradient, hessian);
+  }
   /// Adds the gradient at x to `gradient`: add_gradient_and_hessian()'s,
   /// without the Hessian (what a quasi-Newton iteration asks for).
   virtual void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const = 0;

@@ -39,6 +39,11 @@ public:
     update_terms(x);
     report.initial_energy = report.energy = energy(x);
     if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
+    if(!reweighted_start(x, settings, report))
+    {
+      report.status = Newton_status::LINEAR_SOLVE_FAILED;
+      return report;
+    }
 
     Eigen::VectorXd gradient(x.size()), direction;
     Tail_watch tail(settings.slow_tail);

@@ -65,6 +65,7 @@ public:
     update_terms(x, &pattern_changed);
     report.initial_energy = report.energy = energy(x);
     if(!std::isfinite(report.energy)) { report.status = Newton_status::NOT_FINITE; return report; }
+    if(!reweighted_start(x, settings, report)) return failed(report, solves_before);
 
     // the weights or the map changed since the last call: a new proxy
     have_factor_ = false;

@@ -30,6 +30,7 @@ class Distortion_minimizer
   std::unique_ptr<Bounding_box_term> box_;
   std::unique_ptr<Projected_newton_solver> newton_;
   std::unique_ptr<Proxy_quasi_newton_solver> proxy_;
+  double reweighted_start_ratio_ = default_reweighted_start_ratio;
 
   std::vector<Energy_term*> terms()
   {
@@ -56,6 +57,10 @@ public:
 
   std::vector<double>& weights() { return weights_; }
 
+  /// The reweighted start of the minimizations (Newton_settings::reweighted_start_ratio;
+  /// 0: none). On by default (default_reweighted_start_ratio).
+  void set_reweighted_start(double ratio) { reweighted_start_ratio_ = ratio; }
+
   /// At most `max_iterations` iterations from x, to `tolerance` (Newton_settings), or
   /// until the slow-tail rule `slow_tail` stops them (never by default).
   Newton_report minimize(UV_vector& x, int max_iterations, double tolerance, const Slow_tail& slow_tail = {})
@@ -65,6 +70,7 @@ public:
     settings.tolerance = tolerance;
     settings.slow_tail = slow_tail;
     settings.energy_scale = term_.weighted_area();
+    settings.reweighted_start_ratio = reweighted_start_ratio_;
     return proxy_ ? proxy_->minimize(x, settings) : newton_->minimize(x, settings);
   }
 };

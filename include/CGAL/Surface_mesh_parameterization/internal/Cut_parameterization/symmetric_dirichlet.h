@@ -124,6 +124,32 @@ inline Matrix4 symmetric_dirichlet_projected_hessian(const Matrix2& J)
        + twist * qt * qt.transpose() + flip * ql * ql.transpose();
 }
 
+/// Hessian w.r.t. vec(J) of the reweighted quadratic proxy of Psi at J
+/// (the local-global proxy of SLIM, Rabinovich et al. 2017):
+/// Q(K) = 1/2 |W (K - R)|^2, R = U V^T the rotation closest to J and
+/// W^2 = U diag(w1^2, w2^2) U^T with w_i^2 = (s_i - s_i^-3) / (s_i - 1)
+/// = (s_i + 1)(s_i^2 + 1) / s_i^3, so that Q's gradient at J is Psi's: a
+/// step on Q is a step toward the rotation of every face at once, however
+/// far from it (projected Newton, on s^-2, grows a crushed face by 4/3 per
+/// iteration). Its Hessian is I_2 (x) W^2, positive definite; W^2 needs only
+/// the angle 2 phi of U = rotation(phi), i.e. a1 + a2 of Signed_svd_2.
+/// Precondition: det J > 0.
+inline Matrix4 symmetric_dirichlet_reweighted_proxy_hessian(const Matrix2& J)
+{
+  const Signed_svd_2 svd(J);
+  auto weight = [](double s) { return (s + 1.) * (s * s + 1.) / (s * s * s); };
+  const double w1 = weight(svd.s1), w2 = weight(svd.s2);
+  const double c = svd.cos1 * svd.cos2 - svd.sin1 * svd.sin2; // cos(2 phi)
+  const double s = svd.sin1 * svd.cos2 + svd.cos1 * svd.sin2; // sin(2 phi)
+  const double mean = 0.5 * (w1 + w2), half = 0.5 * (w1 - w2);
+  Matrix2 W2;
+  W2 << mean + half * c, half * s, half * s, mean - half * c;
+  Matrix4 H = Matrix4::Zero();
+  H.block<2, 2>(0, 0) = W2;
+  H.block<2, 2>(2, 2) = W2;
+  return H;
+}
+
 /// Linear map from the 6 UV coordinates (u0,v0,u1,v1,u2,v2) of a face to
 /// vec(J), J = [x1-x0, x2-x0] * rest_inverse.
 inline Eigen::Matrix<double, 4, 6> jacobian_operator(const Matrix2& rest_inverse)
