@@ -40,9 +40,11 @@ class Distortion_term : public Energy_term
     }
   }
 
-  /// The gradient, and the Hessian of a quadratic model of Psi w.r.t. vec(J) (`model`) carried to the UVs.
+  /// The gradient, and the Hessian of a quadratic model of Psi w.r.t. vec(J)
+  /// (`model(J)`, a callable inlined in the per-face loop) carried to the UVs.
+  template <typename Model>
   void add_gradient_and_model(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler& hessian,
-                              Matrix4 (*model)(const Matrix2&)) const
+                              const Model& model) const
   {
     const std::size_t n = mesh_.number_of_faces();
     face_gradient_.resize(n);
@@ -100,7 +102,8 @@ public:
   void add_gradient_and_hessian(const UV_vector& x, Eigen::VectorXd& gradient,
                                 Hessian_assembler& hessian) const override
   {
-    add_gradient_and_model(x, gradient, hessian, &symmetric_dirichlet_projected_hessian);
+    add_gradient_and_model(x, gradient, hessian,
+                           [](const Matrix2& J) { return symmetric_dirichlet_projected_hessian(J); });
   }
 
   /// With SLIM's reweighted proxy of each face
@@ -108,7 +111,8 @@ public:
   void add_gradient_and_reweighted_proxy(const UV_vector& x, Eigen::VectorXd& gradient,
                                          Hessian_assembler& hessian) const override
   {
-    add_gradient_and_model(x, gradient, hessian, &symmetric_dirichlet_reweighted_proxy_hessian);
+    add_gradient_and_model(x, gradient, hessian,
+                           [](const Matrix2& J) { return symmetric_dirichlet_reweighted_proxy_hessian(J); });
   }
 
   void add_gradient(const UV_vector& x, Eigen::VectorXd& gradient) const override

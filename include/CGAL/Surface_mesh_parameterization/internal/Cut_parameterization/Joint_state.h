@@ -102,6 +102,26 @@ struct Joint_state
     factorizations += other.factorizations;
     solves += other.solves;
   }
+  /// Adds every record of work (the counts, the u-steps' part, the v-step
+  /// factorizations, the timings) that `later` holds beyond `earlier`, the
+  /// state it started from (a run from a copy of `earlier`).
+  void add_work_since(const Joint_state& later, const Joint_state& earlier)
+  {
+    Solver_counts counts = work();
+    counts += later.work() - earlier.work();
+    set_work(counts);
+    u_step_work += later.u_step_work - earlier.u_step_work;
+    v_step_factorizations += later.v_step_factorizations - earlier.v_step_factorizations;
+    timings.add_since(later.timings, earlier.timings);
+  }
+  /// Every record of work of `other` in place of this state's.
+  void set_work_records(const Joint_state& other)
+  {
+    set_work(other.work());
+    u_step_work = other.u_step_work;
+    v_step_factorizations = other.v_step_factorizations;
+    timings = other.timings;
+  }
 
   /// Adds the work of one minimization (a Newton_report) to the counts;
   /// returns it as Solver_counts.

@@ -207,10 +207,8 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   Error_code status = prepare_first_u_step(surface, face_lambda, unboxed, prepared);
   if(status != OK) return status;
   const Joint_state start = std::move(prepared);
-  std::size_t newton = start.newton_iterations, factorizations = start.factorizations, solves = start.solves;
-  Solver_counts u_step_work = start.u_step_work;
-  std::size_t v_step_factorizations = start.v_step_factorizations;
-  Joint_timings timings = start.timings; // what came before (indexing, the prepared start)
+  Joint_state totals; // the work of all runs: what came before (indexing, the prepared start), then each run's
+  totals.set_work_records(start);
   // A trial runs as without bound, or with the splits that go on until the
   // bound holds (`split_to_bound`). Without bound, the low-poly splits only
   // run at or below the given λ: above it, the search asks for fewer seams,
@@ -250,14 +248,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     return optimize_cut_mesh(surface, face_lambda, trial_settings, s);
   };
   // the work of a trial from `start`
-  auto add_work = [&](const Joint_state& s) {
-    newton += s.newton_iterations - start.newton_iterations;
-    factorizations += s.factorizations - start.factorizations;
-    solves += s.solves - start.solves;
-    u_step_work += s.u_step_work - start.u_step_work;
-    v_step_factorizations += s.v_step_factorizations - start.v_step_factorizations;
-    timings.add_since(s.timings, start.timings);
-  };
+  auto add_work = [&](const Joint_state& s) { totals.add_work_since(s, start); };
   auto record = [&](double lambda, Joint_state& s) {
     add_work(s);
     const bool passed = s.distortion <= bound;
@@ -412,12 +403,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   if(!bound_met)
   {
     state = std::move(best_any);
-    state.newton_iterations = newton;
-    state.factorizations = factorizations;
-    state.solves = solves;
-    state.u_step_work = u_step_work;
-    state.v_step_factorizations = v_step_factorizations;
-    state.timings = timings;
+    state.set_work_records(totals);
     return finish_atlas(settings, state);
   }
 
@@ -432,12 +418,10 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
   // 1.065, hand1 3.998 -> 3.938, bimba_i_f10000 1.707 -> 1.681,
   // face_f10000 1.223 -> 1.214; the other 6 unchanged), for 0-8% more time.
   {
-    Scoped_timer merging(timings.final_solve);
+    Scoped_timer merging(totals.timings.final_solve);
     // the trials' work is counted already: from here each state counts its own
     auto collect_work = [&](Joint_state& s) {
-      newton += s.newton_iterations;
-      factorizations += s.factorizations;
-      solves += s.solves;
+      totals.add_work(s);
       s.set_work({});
     };
     for(Joint_state& c : candidates) c.set_work({});
@@ -483,12 +467,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
       collect_work(state);
     }
   }
-  state.newton_iterations = newton;
-  state.factorizations = factorizations;
-  state.solves = solves;
-  state.u_step_work = u_step_work;
-  state.v_step_factorizations = v_step_factorizations;
-  state.timings = timings;
+  state.set_work_records(totals);
   return finish_atlas(settings, state);
 }
 
@@ -534,12 +513,7 @@ Error_code default_target_joint_optimization(const Surface& surface, const std::
   Joint_state& kept = replace ? search : state;
   const Joint_state& other = replace ? state : search;
   // the other run's work since the input
-  Solver_counts work = kept.work();
-  work += other.work() - input.work();
-  kept.set_work(work);
-  kept.u_step_work += other.u_step_work - input.u_step_work;
-  kept.v_step_factorizations += other.v_step_factorizations - input.v_step_factorizations;
-  kept.timings.add_since(other.timings, input.timings);
+  kept.add_work_since(other, input);
   if(replace) state = std::move(search);
   return OK;
 }
