@@ -57,6 +57,9 @@ struct Newton_settings
   /// deserves the name, so that a map near its minimum takes no such step.
   double reweighted_start_ratio = 0.;
   double reweighted_start_energy = 10.;
+  /// The longest step the line search tries, in whole steps (1: none
+  /// longer; Energy_terms_core::line_search()).
+  double step_growth = 1.;
 };
 
 /// The reweighted start's ratio of Distortion_minimizer (minimize_distortion.h).
@@ -65,6 +68,22 @@ struct Newton_settings
 /// / 0.95): 328 -> 200 / 223 / 223, 253 -> 232 / 238 / 293, 238 -> 199 /
 /// 239 / 211 (the same E_d within 0.003), and 189 -> 158 without the barrier.
 constexpr double default_reweighted_start_ratio = 0.8;
+
+/// Newton_settings::step_growth of Distortion_minimizer (minimize_distortion.h).
+/// In a slow tail of projected Newton, the whole step passes the line search
+/// and still lowers the energy by a small fraction of what a step twice or
+/// four times as long does: the clamped twist curvature of compressed faces
+/// (symmetric_dirichlet_projected_hessian()) makes the model stiffer than
+/// the energy. Measured (2 cores) on a solve of ArtDemo with holes
+/// (wild_corpus.py) from a Tutte map, replayed: 148 -> 79 iterations without
+/// the border barrier, E_d 5.4260 -> 5.4255 (4, 16: 119, 79); 190 -> 173
+/// under it. On the 21 benchmark meshes, in the final solves and the split
+/// trials (not in the alternation's u-steps): the same E_s on all, E_d within
+/// +0.008 (cow_head 4.5162 -> 4.5244, coverage 0.553 -> 0.561), Newton
+/// iterations fewer on 19 (camel_simple 1020 -> 852, cow_head 340 -> 258).
+/// In the u-steps too, the cuts moved (planck1 E_d 4.5890 -> 4.5977, E_s
+/// 2.265 -> 2.468; venus E_s 2.815 -> 3.088; bimba 2.077 -> 2.059): see u_step().
+constexpr double default_step_growth = 64.;
 
 /// SLOW_TAIL: stopped by Newton_settings::slow_tail.
 enum class Newton_status { CONVERGED, MAX_ITERATIONS, STALLED, SLOW_TAIL, LINEAR_SOLVE_FAILED, NOT_FINITE };
@@ -254,34 +273,56 @@ protected:
          || !factorize_and_solve(shift, -gradient, direction, report.factorizations))
         return false;
       const double slope = gradient.dot(direction), before = report.energy;
-      if(!(slope < 0.) || !line_search(x, direction, slope, report.energy)) break;
+      if(!(slope < 0.) || !line_search(x, direction, slope, report.energy, settings.step_growth)) break;
       ++report.iterations;
       if(report.energy > settings.reweighted_start_ratio * before) break;
     }
     return true;
   }
 
-  /// Flip-free backtracking from a step of at most `first_step`; updates x
-  /// and energy. False if no decrease was found.
+  /// Flip-free backtracking (Armijo) from the whole step, or 0.9 of the
+  /// step bound where that is shorter; updates x and energy. False if no
+  /// decrease was found. Where that first trial passes, steps 2, 4, ...
+  /// times as long follow, at most `growth` whole steps and 0.9 of the step
+  /// bound, while each lowers the energy further; the last of them is kept
+  /// (Newton_settings::step_growth).
   bool line_search(UV_vector& x, const Eigen::VectorXd& direction, double slope, double& current,
-                   double first_step = 1.)
+                   double growth = 1.)
   {
-    double t = (std::min)(first_step, 0.9 * max_step(x, direction));
+    const double bound = 0.9 * max_step(x, direction);
+    double t = (std::min)(1., bound);
     const double armijo = 1e-4;
     UV_vector trial(x.size());
     for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5)
     {
       trial = x + t * direction;
-      const double e = energy(trial);
+      double e = energy(trial);
       if(e <= current + armijo * t * slope)
       {
         if(!(e < current)) return false;
+        if(k == 0) grow_step(x, direction, t, (std::min)(growth, bound), trial, e);
         x.swap(trial);
         current = e;
         return true;
       }
     }
     return false;
+  }
+
+  /// `step` is x + t `direction`, of energy `e`: it becomes x + 2t direction,
+  /// then 4t, ... up to `longest`, while each lowers e further.
+  void grow_step(const UV_vector& x, const Eigen::VectorXd& direction, double t, double longest, UV_vector& step,
+                 double& e) const
+  {
+    UV_vector longer_step;
+    for(double longer = 2. * t; longer <= longest; longer *= 2.)
+    {
+      longer_step = x + longer * direction;
+      const double longer_e = energy(longer_step);
+      if(!(longer_e < e)) return;
+      step.swap(longer_step);
+      e = longer_e;
+    }
   }
 
 public:

@@ -73,7 +73,7 @@ public:
         report.status = Newton_status::CONVERGED;
         break;
       }
-      if(!line_search(x, direction, slope, report.energy))
+      if(!line_search(x, direction, slope, report.energy, settings.step_growth))
       {
         report.status = Newton_status::STALLED;
         break;

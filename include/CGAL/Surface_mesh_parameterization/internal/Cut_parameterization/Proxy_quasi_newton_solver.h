@@ -111,7 +111,7 @@ public:
       previous_x = x;
       previous_gradient = gradient;
       const double before = report.energy;
-      if(!line_search(x, direction, slope, report.energy))
+      if(!line_search(x, direction, slope, report.energy, settings.step_growth))
       {
         if(fresh)
         {

@@ -31,6 +31,7 @@ class Distortion_minimizer
   std::unique_ptr<Projected_newton_solver> newton_;
   std::unique_ptr<Proxy_quasi_newton_solver> proxy_;
   double reweighted_start_ratio_ = default_reweighted_start_ratio;
+  double step_growth_ = default_step_growth;
 
   std::vector<Energy_term*> terms()
   {
@@ -61,6 +62,10 @@ public:
   /// 0: none). On by default (default_reweighted_start_ratio).
   void set_reweighted_start(double ratio) { reweighted_start_ratio_ = ratio; }
 
+  /// The longest step of the line search, in whole steps (Newton_settings::step_growth;
+  /// 1: none longer). default_step_growth by default.
+  void set_step_growth(double growth) { step_growth_ = growth; }
+
   /// At most `max_iterations` iterations from x, to `tolerance` (Newton_settings), or
   /// until the slow-tail rule `slow_tail` stops them (never by default).
   Newton_report minimize(UV_vector& x, int max_iterations, double tolerance, const Slow_tail& slow_tail = {})
@@ -71,6 +76,7 @@ public:
     settings.slow_tail = slow_tail;
     settings.energy_scale = term_.weighted_area();
     settings.reweighted_start_ratio = reweighted_start_ratio_;
+    settings.step_growth = step_growth_;
     return proxy_ ? proxy_->minimize(x, settings) : newton_->minimize(x, settings);
   }
 };
