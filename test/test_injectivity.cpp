@@ -12,6 +12,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/carried_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
@@ -401,3 +403,92 @@ TEST(Injectivity, bounding_box_gradient_matches_finite_differences)
   EXPECT_EQ(box.value(small), 0.);
 }
 
+
+// The start of a chart that crossed itself in the final solve after splits
+// (carried_map.h): the valid map the splits started from, carried over their
+// new cut. On a cone solved under the barrier, then cut from its border
+// toward its apex: the carried map is valid (no flipped face, a border that
+// does not meet itself), keeps every vertex off the cut where it was, parts
+// the two copies of each vertex on the cut, and is a start from which the
+// barrier's solve converges in fewer iterations than from the Tutte map.
+TEST(Injectivity, a_valid_map_carried_over_a_new_cut_starts_the_barrier_solve)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(cone_soup(8, 24, 1., 1.2));
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Chart_mesh before, after;
+  std::vector<int> corner_uv;
+  std::vector<char> is_cut(surface.edges.size(), 0);
+  ic::build_chart_mesh(surface, is_cut, before, corner_uv);
+  ic::UV_vector x_before;
+  ASSERT_TRUE(ic::disk_charts_embedding(before, x_before) == ic::Embedding_status::OK);
+  const std::vector<double> weights(before.number_of_faces(), 1.);
+  ic::Distortion_minimizer(before, weights, true).minimize(x_before, 500, 1e-9);
+  ASSERT_EQ(ic::number_of_flipped_faces(before, x_before), 0);
+
+  // the cut: from the border vertex of largest x, 5 edges toward the apex
+  const std::vector<char> on_border = surface.border_vertices();
+  std::vector<std::vector<std::array<int, 2>>> neighbours(surface.number_of_vertices()); // (vertex, edge)
+  for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = surface.corner_vertex[f][k], b = surface.corner_vertex[f][(k + 1) % 3];
+      neighbours[std::size_t(a)].push_back({b, surface.edge_of[3 * f + std::size_t(k)]});
+      neighbours[std::size_t(b)].push_back({a, surface.edge_of[3 * f + std::size_t(k)]});
+    }
+  auto apex_distance = [&](int v) {
+    const auto& p = surface.points[std::size_t(v)];
+    return std::hypot(p.x(), p.y());
+  };
+  int v = -1;
+  for(int u = 0; u < int(surface.number_of_vertices()); ++u)
+    if(on_border[std::size_t(u)] && (v < 0 || surface.points[std::size_t(u)].x() > surface.points[std::size_t(v)].x()))
+      v = u;
+  for(int step = 0; step < 5; ++step)
+  {
+    std::array<int, 2> next{-1, -1};
+    for(const auto& n : neighbours[std::size_t(v)])
+      if(!on_border[std::size_t(n[0])] && (next[0] < 0 || apex_distance(n[0]) < apex_distance(next[0]))) next = n;
+    ASSERT_GE(next[0], 0);
+    is_cut[std::size_t(next[1])] = 1;
+    v = next[0];
+  }
+  ic::build_chart_mesh(surface, is_cut, after, corner_uv);
+  ASSERT_EQ(after.number_of_vertices, before.number_of_vertices + 5);
+
+  ic::Carried_map carried;
+  ic::carry_map_over_new_cuts(before, x_before, after, carried);
+  ASSERT_EQ(carried.valid.size(), 1u);
+  EXPECT_TRUE(carried.valid[0]);
+  EXPECT_EQ(ic::number_of_flipped_faces(after, carried.x), 0);
+  EXPECT_EQ(ic::Border_barrier_term(after).charts_with_crossing(carried.x), std::vector<char>(1, 0));
+  std::vector<int> origin(std::size_t(after.number_of_vertices)), copies(std::size_t(before.number_of_vertices), 0);
+  for(std::size_t f = 0; f < after.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k) origin[std::size_t(after.faces[f][k])] = before.faces[f][k];
+  for(int o : origin) ++copies[std::size_t(o)];
+  int split = 0;
+  for(int u = 0; u < after.number_of_vertices; ++u)
+  {
+    const int o = origin[std::size_t(u)];
+    if(copies[std::size_t(o)] == 1)
+      EXPECT_EQ(carried.x.segment<2>(2 * u), x_before.segment<2>(2 * o)) << u;
+    else
+    {
+      ++split;
+      for(int w = u + 1; w < after.number_of_vertices; ++w)
+        if(origin[std::size_t(w)] == o) EXPECT_GT((carried.x.segment<2>(2 * u) - carried.x.segment<2>(2 * w)).norm(), 0.);
+    }
+  }
+  EXPECT_EQ(split, 10); // the border vertex and the four inside, twice; the tip once
+
+  ic::UV_vector tutte, from_carried = carried.x;
+  ASSERT_TRUE(ic::disk_charts_embedding(after, tutte) == ic::Embedding_status::OK);
+  const std::vector<double> after_weights(after.number_of_faces(), 1.);
+  const ic::Newton_report carried_report = ic::Distortion_minimizer(after, after_weights, true).minimize(from_carried, 500, 1e-9);
+  const ic::Newton_report tutte_report = ic::Distortion_minimizer(after, after_weights, true).minimize(tutte, 500, 1e-9);
+  ASSERT_EQ(int(carried_report.status), int(ic::Newton_status::CONVERGED));
+  ASSERT_EQ(int(tutte_report.status), int(ic::Newton_status::CONVERGED));
+  EXPECT_EQ(ic::number_of_flipped_faces(after, from_carried), 0);
+  EXPECT_LT(carried_report.iterations, tutte_report.iterations);
+  EXPECT_LE(carried_report.energy, tutte_report.energy * (1. + 1e-6));
+}
