@@ -312,18 +312,19 @@ protected:
   /// `step` is x + t `direction`, of energy `e`: it becomes x + 2t direction,
   /// then 4t, ... up to `longest`, while each lowers e further.
   void grow_step(const UV_vector& x, const Eigen::VectorXd& direction, double t, double longest, UV_vector& step,
-                 double& e) const
+                 double& e)
   {
-    UV_vector longer_step;
     for(double longer = 2. * t; longer <= longest; longer *= 2.)
     {
-      longer_step = x + longer * direction;
-      const double longer_e = energy(longer_step);
+      longer_step_ = x + longer * direction; // (allocated once: the size stays)
+      const double longer_e = energy(longer_step_);
       if(!(longer_e < e)) return;
-      step.swap(longer_step);
+      step.swap(longer_step_);
       e = longer_e;
     }
   }
+
+  UV_vector longer_step_; // grow_step()'s trial
 
 public:
   double energy(const UV_vector& x) const

@@ -266,7 +266,7 @@ struct Unboxed_final_map
   double distortion = 0.; // E_d of the map without box (before any restart)
   bool barrier = false;   // the border barrier is on (it stays on)
   bool restart = false;   // a chart crossed itself and starts again from its Tutte map
-                          // (`distortion` is then that of an invalid map)
+                          // or a carried map (`distortion` is then that of an invalid map)
 };
 
 /// The final solve on the cut mesh without the box, from the map of the
