@@ -292,16 +292,15 @@ protected:
     const double bound = 0.9 * max_step(x, direction);
     double t = (std::min)(1., bound);
     const double armijo = 1e-4;
-    UV_vector trial(x.size());
     for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5)
     {
-      trial = x + t * direction;
-      double e = energy(trial);
+      trial_ = x + t * direction; // (trial_ keeps its size: allocated once per solver)
+      double e = energy(trial_);
       if(e <= current + armijo * t * slope)
       {
         if(!(e < current)) return false;
-        if(k == 0) grow_step(x, direction, t, (std::min)(growth, bound), trial, e);
-        x.swap(trial);
+        if(k == 0) grow_step(x, direction, t, (std::min)(growth, bound), trial_, e);
+        x.swap(trial_);
         current = e;
         return true;
       }
@@ -316,7 +315,7 @@ protected:
   {
     for(double longer = 2. * t; longer <= longest; longer *= 2.)
     {
-      longer_step_ = x + longer * direction; // (allocated once: the size stays)
+      longer_step_ = x + longer * direction;
       const double longer_e = energy(longer_step_);
       if(!(longer_e < e)) return;
       step.swap(longer_step_);
@@ -324,7 +323,7 @@ protected:
     }
   }
 
-  UV_vector longer_step_; // grow_step()'s trial
+  UV_vector trial_, longer_step_; // the line search's trials
 
 public:
   double energy(const UV_vector& x) const

@@ -77,6 +77,7 @@ inline void carry_map_over_new_cuts(const Chart_mesh& before, const UV_vector& x
     for(int k = 0; k < 3; ++k)
     {
       const int v = after.faces[f][k];
+      if(copies[std::size_t(origin[std::size_t(v)])] < 2) continue; // only the split vertices move
       const Vector2 p = x.segment<2>(2 * v), a = x.segment<2>(2 * after.faces[f][(k + 1) % 3]),
                     b = x.segment<2>(2 * after.faces[f][(k + 2) % 3]);
       const double length = (b - a).norm();
