@@ -182,7 +182,7 @@ TEST(Default_target_splits, splits_that_do_not_pay_still_reach_the_target)
   ic::Joint_state start;
   start.is_cut.assign(surface.edges.size(), 0);
   ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, settings, start), SMP::OK);
-  ASSERT_EQ(ic::final_solve(settings, false, start), SMP::OK);
+  ASSERT_EQ(ic::final_solve(surface, settings, false, start), SMP::OK);
   start.distortion = ic::mean_distortion(start.chart, start.x);
   ASSERT_GT(start.distortion, ic::default_distortion_target); // the solved map of the initial cut is above it
   ic::Joint_state split = start;

@@ -202,13 +202,13 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
   // the wave's own final solve (from its map, as after the alternation), and
   // its straight row's (rerouted within a ring, from a Tutte map)
   ic::Joint_state wave_solved = start;
-  ASSERT_EQ(ic::final_solve(settings, false, wave_solved), SMP::OK);
+  ASSERT_EQ(ic::final_solve(g.surface, settings, false, wave_solved), SMP::OK);
   const double wave_distortion = ic::mean_distortion(wave_solved.chart, wave_solved.x);
   ic::Joint_state row_solved = start;
   ASSERT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 1, row_solved.is_cut), 1);
   ic::build_chart_mesh(g.surface, row_solved.is_cut, row_solved.chart, row_solved.corner_uv);
   ASSERT_TRUE(ic::disk_charts_embedding(row_solved.chart, row_solved.x) == ic::Embedding_status::OK);
-  ASSERT_EQ(ic::final_solve(settings, true, row_solved), SMP::OK);
+  ASSERT_EQ(ic::final_solve(g.surface, settings, true, row_solved), SMP::OK);
   const double row_distortion = ic::mean_distortion(row_solved.chart, row_solved.x);
   ASSERT_LT(g.length(row_solved.is_cut), g.length(start.is_cut));
   // away from the bump the straight row costs distortion (what makes the next checks tell)

@@ -144,11 +144,25 @@ struct Joint_state
 /// way gives the same result.
 constexpr std::size_t two_states_at_once_max_faces = 250000;
 
+/// Rebuilds the chart mesh of `state` from `state.is_cut`, which holds the
+/// cuts of the current chart mesh and maybe more, and carries the UVs over:
+/// both sides of a new cut start where the uncut vertex was, so the map
+/// stays flip-free.
+template <typename Surface>
+void rebuild_cut_mesh(const Surface& surface, Joint_state& state)
+{
+  const std::vector<int> old_corner_uv = state.corner_uv;
+  const UV_vector old_x = state.x;
+  build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  state.x.resize(2 * state.chart.number_of_vertices);
+  for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
+    state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
+}
+
 /// Cuts the edges of `paths`, then joins any closed slit (a path that does
 /// not reach the boundary) to the boundary by a short path, so every chart
 /// stays a topological disk (make_disks()). Rebuilds the chart mesh and
-/// carries the UVs over: both sides of a new cut start where the uncut
-/// vertex was, so the map stays flip-free.
+/// carries the UVs over (rebuild_cut_mesh()).
 ///
 /// With forbidden edges, a slit may have no way to the boundary: then the
 /// paths are taken one at a time, and those whose slit cannot be opened
@@ -169,12 +183,7 @@ void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Join
       if(make_disks(surface, trial, state.rules)) state.is_cut.swap(trial);
     }
   }
-  const std::vector<int> old_corner_uv = state.corner_uv;
-  const UV_vector old_x = state.x;
-  build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
-  state.x.resize(2 * state.chart.number_of_vertices);
-  for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
-    state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
+  rebuild_cut_mesh(surface, state);
 }
 
 /// 3D length of the cut edges that are not on the mesh's border.

@@ -55,12 +55,13 @@ struct Bound_search_settings
 /// result if its E_d is within the bound (`kept`), else takes only its
 /// Newton counts. A chart whose border crossed is solved again from its
 /// Tutte map, which may end above the bound.
-inline Error_code solve_within_bound(const Joint_settings& settings, bool from_tutte_map, Joint_state candidate,
-                                     Joint_state& state, bool& kept)
+template <typename Surface>
+Error_code solve_within_bound(const Surface& surface, const Joint_settings& settings, bool from_tutte_map,
+                              Joint_state candidate, Joint_state& state, bool& kept)
 {
   Joint_settings bounded = settings;
   bounded.bounding_box_distortion_ceiling = (std::min)(settings.distortion_bound, settings.bounding_box_distortion_ceiling);
-  const Error_code status = final_solve(bounded, from_tutte_map, candidate);
+  const Error_code status = final_solve(surface, bounded, from_tutte_map, candidate);
   if(status != OK) return status;
   candidate.distortion = mean_distortion(candidate.chart, candidate.x);
   kept = candidate.distortion <= settings.distortion_bound;
@@ -99,7 +100,7 @@ Error_code merge_under_bound(const Surface& surface, const Joint_settings& setti
     candidate.is_cut = steps[k - 1].is_cut;
     candidate.x = steps[k - 1].x;
     build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
-    if((status = solve_within_bound(settings, false, std::move(candidate), state, kept)) != OK) return status;
+    if((status = solve_within_bound(surface, settings, false, std::move(candidate), state, kept)) != OK) return status;
   }
   return OK;
 }
@@ -124,7 +125,7 @@ Error_code straighten_under_bound(const Surface& surface, const Joint_settings& 
     Joint_state candidate = state;
     if(!rerouted_cut_mesh(surface, state, keep, rings, slide, candidate)) continue;
     bool kept = false;
-    const Error_code status = solve_within_bound(settings, true, std::move(candidate), state, kept);
+    const Error_code status = solve_within_bound(surface, settings, true, std::move(candidate), state, kept);
     if(status != OK) return status;
   }
   return OK;
@@ -167,7 +168,7 @@ Error_code split_from_start(const Surface& surface, const std::vector<double>& f
     if(status != OK) return status;
   }
   Scoped_timer final_timer(state.timings.final_solve);
-  const Error_code status = final_solve(split_settings, from_tutte_map, state);
+  const Error_code status = final_solve(surface, split_settings, from_tutte_map, state);
   if(status != OK) return status;
   state.distortion = mean_distortion(state.chart, state.x);
   return split_where_distorted(surface, split_settings, state);
@@ -463,7 +464,7 @@ Error_code bounded_joint_optimization(const Surface& surface, const std::vector<
     if(settings.bounding_box_stiffness > 0.)
     {
       bool kept = false;
-      if((status = solve_within_bound(settings, false, state, state, kept)) != OK) return status;
+      if((status = solve_within_bound(surface, settings, false, state, state, kept)) != OK) return status;
       collect_work(state);
     }
   }

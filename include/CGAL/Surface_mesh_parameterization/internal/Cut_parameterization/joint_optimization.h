@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/multiresolution.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/overlap_partition.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scoped_timer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
@@ -96,6 +97,10 @@ struct Joint_settings
   double box_tolerance = 1e-4;
   // Atlas: no chart overlaps itself (final_solve()), then packing into the unit square.
   bool global_injectivity = true;
+  // With global injectivity: a chart whose map without the border barrier
+  // overlaps itself on more than this many faces is cut into pieces that do
+  // not (final_solve_without_box(); 0: never).
+  int overlap_partition_faces = 5000;
   // Bounding box: the final solve pulls each chart into a rectangle of this
   // width / height, with this stiffness (0: off); the default is a gentle
   // square (see gentle_bounding_box_stiffness for the measures).
@@ -141,7 +146,8 @@ struct Joint_settings
         && minimum_relative_cut_length >= 0. && minimum_relative_cut_length <= 1.
         && bounding_box_aspect_ratio >= 0. && std::isfinite(bounding_box_aspect_ratio)
         && bounding_box_stiffness >= 0. && std::isfinite(bounding_box_stiffness)
-        && bounding_box_distortion_budget >= 0. && multiresolution_faces >= 0 && rerouting_rings >= 0
+        && bounding_box_distortion_budget >= 0. && multiresolution_faces >= 0 && overlap_partition_faces >= 0
+        && rerouting_rings >= 0
         && rerouting_allowance >= 0. && std::isfinite(rerouting_allowance)
         && slow_tail.after >= 0 && slow_tail.window >= 1 && slow_tail.ratio >= 0. && std::isfinite(slow_tail.ratio)
         && (distortion_bound == 0. || (distortion_bound >= 4. && std::isfinite(distortion_bound)))
@@ -291,8 +297,9 @@ struct Unboxed_final_map
 /// 4.2811 both; refined_elephant.off 62 + 173 -> 78 + 67, 33.8 -> 21.1 s,
 /// E_d 4.1910 -> 4.1874; refined to 40k 20 + 44 -> 35 + 31, 4.3 -> 4.6 s,
 /// E_d 4.3275 -> 4.3271.
-inline Error_code final_solve_without_box(const Joint_settings& settings, bool from_tutte_map, Joint_state& state,
-                                          Unboxed_final_map& unboxed, const Carried_map* carried = nullptr)
+template <typename Surface>
+Error_code final_solve_without_box(const Surface& surface, const Joint_settings& settings, bool from_tutte_map,
+                                   Joint_state& state, Unboxed_final_map& unboxed, const Carried_map* carried = nullptr)
 {
   const bool barrier_first = settings.global_injectivity && from_tutte_map;
   const Error_code status = final_minimization(settings, barrier_first, 0., final_box_stiffness(settings) > 0., state);
@@ -300,10 +307,25 @@ inline Error_code final_solve_without_box(const Joint_settings& settings, bool f
   unboxed.distortion = mean_distortion(state.chart, state.x);
   unboxed.barrier = barrier_first;
   if(!settings.global_injectivity || barrier_first) return OK;
-  const std::vector<char> crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
+  std::vector<char> crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
   if(std::find(crossing.begin(), crossing.end(), 1) == crossing.end()) return OK;
   // a chart starts again from the carried map where that is valid, else from Tutte
   auto carried_valid = [&](int c) { return carried != nullptr && carried->valid[std::size_t(c)]; };
+  // or, where it overlaps itself much, it is cut into pieces that do not
+  if(settings.overlap_partition_faces > 0)
+  {
+    const std::vector<std::size_t> overlapping = self_overlapping_face_counts(state.chart, state.x);
+    std::vector<char> cut_up(crossing.size(), 0);
+    for(std::size_t c = 0; c < crossing.size(); ++c)
+      cut_up[c] = crossing[c] && !carried_valid(int(c))
+                  && overlapping[c] > std::size_t(settings.overlap_partition_faces);
+    if(std::find(cut_up.begin(), cut_up.end(), 1) != cut_up.end() && cut_into_overlap_free_pieces(surface, cut_up, state))
+    {
+      carried = nullptr; // its charts are those of the chart mesh before
+      crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
+      unboxed.barrier = unboxed.restart = true;
+    }
+  }
   bool need_tutte = false;
   for(int c = 0; c < int(crossing.size()); ++c) need_tutte = need_tutte || (crossing[c] && !carried_valid(c));
   UV_vector tutte;
@@ -379,11 +401,12 @@ inline Error_code final_solve_box(const Joint_settings& settings, const Unboxed_
 }
 
 /// The final solve: final_solve_without_box(), then final_solve_box().
-inline Error_code final_solve(const Joint_settings& settings, bool from_tutte_map, Joint_state& state,
-                              const Carried_map* carried = nullptr)
+template <typename Surface>
+Error_code final_solve(const Surface& surface, const Joint_settings& settings, bool from_tutte_map, Joint_state& state,
+                       const Carried_map* carried = nullptr)
 {
   Unboxed_final_map unboxed;
-  const Error_code status = final_solve_without_box(settings, from_tutte_map, state, unboxed, carried);
+  const Error_code status = final_solve_without_box(surface, settings, from_tutte_map, state, unboxed, carried);
   return status != OK ? status : final_solve_box(settings, unboxed, state);
 }
 
@@ -398,6 +421,17 @@ bool rerouted_cut_mesh(const Surface& surface, const Joint_state& state, const s
   if(straighten_seams(surface, state.rules, keep, rings, rerouted.is_cut, slide) == 0) return false;
   build_chart_mesh(surface, rerouted.is_cut, rerouted.chart, rerouted.corner_uv);
   return disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
+}
+
+/// True if, with global injectivity, a chart of `state` overlaps itself on
+/// more than `settings.overlap_partition_faces` faces: the final solve will
+/// cut it into pieces (final_solve_without_box()).
+inline bool overlaps_itself_much(const Joint_settings& settings, const Joint_state& state)
+{
+  if(!settings.global_injectivity || settings.overlap_partition_faces <= 0) return false;
+  const std::vector<std::size_t> overlapping = self_overlapping_face_counts(state.chart, state.x);
+  return std::any_of(overlapping.begin(), overlapping.end(),
+                     [&](std::size_t n) { return n > std::size_t(settings.overlap_partition_faces); });
 }
 
 /// final_solve() of the cut mesh in `state`, or of the same seams rerouted
@@ -441,12 +475,13 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
   Joint_state rerouted;
   const bool have_rerouted = !from_tutte_map && settings.rerouting_rings > 0
                              && surface.number_of_faces() <= two_states_at_once_max_faces
+                             && !overlaps_itself_much(settings, state)
                              && rerouted_cut_mesh(surface, state, keep, settings.rerouting_rings, false, rerouted);
-  if(!have_rerouted) return final_solve(settings, from_tutte_map, state);
+  if(!have_rerouted) return final_solve(surface, settings, from_tutte_map, state);
   Error_code first = OK, second = OK;
   Unboxed_final_map unboxed, rerouted_unboxed;
-  parallel_invoke([&] { first = final_solve_without_box(settings, from_tutte_map, state, unboxed); },
-                  [&] { second = final_solve_without_box(settings, true, rerouted, rerouted_unboxed); });
+  parallel_invoke([&] { first = final_solve_without_box(surface, settings, from_tutte_map, state, unboxed); },
+                  [&] { second = final_solve_without_box(surface, settings, true, rerouted, rerouted_unboxed); });
   if(first != OK) return first;
   // where the first map crossed itself, its E_d without box is not yet that
   // of a valid map: both are solved through and compared after the box
@@ -597,7 +632,7 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     Carried_map carried;
     if(settings.global_injectivity) carry_map_over_new_cuts(state.chart, state.x, split.chart, carried);
     state = std::move(split);
-    if((status = final_solve(settings, false, state, settings.global_injectivity ? &carried : nullptr)) != OK)
+    if((status = final_solve(surface, settings, false, state, settings.global_injectivity ? &carried : nullptr)) != OK)
       return status;
     state.distortion = mean_distortion(state.chart, state.x);
     if(!(goal > 0. && state.distortion > goal)) break;
