@@ -423,15 +423,15 @@ bool rerouted_cut_mesh(const Surface& surface, const Joint_state& state, const s
   return disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
 }
 
-/// True if, with global injectivity, a chart of `state` overlaps itself on
-/// more than `settings.overlap_partition_faces` faces: the final solve will
-/// cut it into pieces (final_solve_without_box()).
-inline bool overlaps_itself_much(const Joint_settings& settings, const Joint_state& state)
+/// True if, with global injectivity, a chart of `state` overlaps itself
+/// (self_overlapping_faces()): its final solve will start again from its
+/// Tutte map under the border barrier, or cut it into pieces
+/// (final_solve_without_box()).
+inline bool overlaps_itself(const Joint_settings& settings, const Joint_state& state)
 {
-  if(!settings.global_injectivity || settings.overlap_partition_faces <= 0) return false;
+  if(!settings.global_injectivity) return false;
   const std::vector<std::size_t> overlapping = self_overlapping_face_counts(state.chart, state.x);
-  return std::any_of(overlapping.begin(), overlapping.end(),
-                     [&](std::size_t n) { return n > std::size_t(settings.overlap_partition_faces); });
+  return std::any_of(overlapping.begin(), overlapping.end(), [](std::size_t n) { return n > 0; });
 }
 
 /// final_solve() of the cut mesh in `state`, or of the same seams rerouted
@@ -456,7 +456,14 @@ inline bool overlaps_itself_much(const Joint_settings& settings, const Joint_sta
 /// paths already, and at those sizes the final solve is most of the time:
 /// two at once on 2 cores share the memory bandwidth (bimba_i_f10000
 /// refined to 160k faces: final solve 13.1 -> 25.5 s, the whole run 17.6 ->
-/// 30.4 s; CGAL's refined_elephant.off 32.3 -> 58.2 s).
+/// 30.4 s; CGAL's refined_elephant.off 32.3 -> 58.2 s). Nor where the
+/// alternation's map overlaps itself (overlaps_itself()): the first map then
+/// starts again from its Tutte map under the barrier (or is cut into
+/// pieces), and the rerouted seams' solve from a Tutte map ran beside it, as
+/// long, sharing the memory bandwidth. Measured (2 cores) on ArtDemo with
+/// holes (wild_corpus.py): 32.9 -> 28.0 s, the same result (its rerouted
+/// seams were not kept: E_d 4.5911, E_s 14.876); CGAL's cheese.off: its
+/// rerouted seams' solve from Tutte reached the 500-iteration cap.
 ///
 /// The field v opens its cuts along a band, through the mesh's edges: the
 /// seams zigzag. Measured on the 20 benchmark meshes (2 cores): rerouted
@@ -475,7 +482,7 @@ Error_code final_solve_with_rerouting(const Surface& surface, const Joint_settin
   Joint_state rerouted;
   const bool have_rerouted = !from_tutte_map && settings.rerouting_rings > 0
                              && surface.number_of_faces() <= two_states_at_once_max_faces
-                             && !overlaps_itself_much(settings, state)
+                             && !overlaps_itself(settings, state)
                              && rerouted_cut_mesh(surface, state, keep, settings.rerouting_rings, false, rerouted);
   if(!have_rerouted) return final_solve(surface, settings, from_tutte_map, state);
   Error_code first = OK, second = OK;
