@@ -100,7 +100,7 @@ struct Joint_settings
   // With global injectivity: a chart whose map without the border barrier
   // overlaps itself on more than this many faces is cut into pieces that do
   // not (final_solve_without_box(); 0: never).
-  int overlap_partition_faces = 5000;
+  int overlap_partition_faces = 10000;
   // Bounding box: the final solve pulls each chart into a rectangle of this
   // width / height, with this stiffness (0: off); the default is a gentle
   // square (see gentle_bounding_box_stiffness for the measures).
@@ -281,8 +281,12 @@ struct Unboxed_final_map
 /// convex) for final_solve_box() to solve again, with the box at once and
 /// the border barrier that keeps borders from crossing; or, where `carried`
 /// holds a valid map of that chart (the map the splits started from, carried
-/// over their cuts: carried_map.h), to that map. The other charts
-/// start from where they are. The alternation's map is no start for it: its
+/// over their cuts: carried_map.h), to that map. A crossing chart without
+/// such a map that overlaps itself on more than
+/// `settings.overlap_partition_faces` faces is cut into pieces that do not
+/// (cut_into_overlap_free_pieces()), each starting from its part of the map
+/// (`carried` is then set aside: its charts are those of the mesh before).
+/// The other charts start from where they are. The alternation's map is no start for it: its
 /// new cuts are slits of zero width, whose sides touch (with the scaffold
 /// used before the barrier, a slit opened just a little stayed almost
 /// closed: venus E_d 4.77 from there, 4.37 from Tutte; hand1 7.5 and 4.58).
