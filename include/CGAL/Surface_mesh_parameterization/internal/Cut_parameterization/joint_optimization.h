@@ -434,8 +434,9 @@ bool rerouted_cut_mesh(const Surface& surface, const Joint_state& state, const s
 inline bool overlaps_itself(const Joint_settings& settings, const Joint_state& state)
 {
   if(!settings.global_injectivity) return false;
-  const std::vector<std::size_t> overlapping = self_overlapping_face_counts(state.chart, state.x);
-  return std::any_of(overlapping.begin(), overlapping.end(), [](std::size_t n) { return n > 0; });
+  int charts = 0;
+  const std::vector<char> overlapping = self_overlapping_faces(state.chart, state.x, chart_of_faces(state.chart, charts));
+  return std::find(overlapping.begin(), overlapping.end(), 1) != overlapping.end();
 }
 
 /// final_solve() of the cut mesh in `state`, or of the same seams rerouted

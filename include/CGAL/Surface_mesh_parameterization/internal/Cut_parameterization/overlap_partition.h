@@ -78,12 +78,11 @@ inline double mean_uv_edge_length(const Chart_mesh& mesh, const UV_vector& x, co
 }
 
 /// Per face: 1 if its UV triangle overlaps that of another face of its chart
-/// (chart ids of chart_of_faces()).
-inline std::vector<char> self_overlapping_faces(const Chart_mesh& mesh, const UV_vector& x)
+/// (`chart`: the chart of each face, as chart_of_faces() gives them).
+inline std::vector<char> self_overlapping_faces(const Chart_mesh& mesh, const UV_vector& x,
+                                                const std::vector<int>& chart)
 {
   const std::size_t nf = mesh.number_of_faces();
-  int charts = 0;
-  const std::vector<int> chart = chart_of_faces(mesh, charts);
   std::vector<std::array<double, 4>> boxes(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
@@ -102,14 +101,13 @@ inline std::vector<char> self_overlapping_faces(const Chart_mesh& mesh, const UV
   return overlapping;
 }
 
-
 /// Per chart (ids of chart_of_faces()): the number of its faces whose UV
 /// triangle overlaps another of the chart (self_overlapping_faces()).
 inline std::vector<std::size_t> self_overlapping_face_counts(const Chart_mesh& mesh, const UV_vector& x)
 {
   int charts = 0;
   const std::vector<int> chart = chart_of_faces(mesh, charts);
-  const std::vector<char> overlapping = self_overlapping_faces(mesh, x);
+  const std::vector<char> overlapping = self_overlapping_faces(mesh, x, chart);
   std::vector<std::size_t> count(std::size_t(charts), 0);
   for(std::size_t f = 0; f < mesh.number_of_faces(); ++f) count[std::size_t(chart[f])] += overlapping[f] != 0;
   return count;
