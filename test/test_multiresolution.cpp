@@ -6,9 +6,14 @@
 // user's seams, not depend on the thread count, and reject a negative size.
 #include "cut_result_checks.h"
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+
+#include <algorithm>
 #include <iomanip>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace ic = SMP::internal::cut;
 using namespace cut_test;
 
 namespace {
@@ -135,3 +140,41 @@ TEST(Multiresolution, negative_size_is_a_wrong_parameter)
   EXPECT_EQ(run.run(SMP::parameters::multiresolution_faces(-1)).error, SMP::ERROR_WRONG_PARAMETER);
 }
 
+
+// A large mesh whose map ends above the default target is split on the
+// copy (internal split_on_coarse_copy()), where a trial is a solve of the copy's
+// map, not of the input's: the seams of the splits go back with the
+// copy's cuts and the input ends at most at the target. Without splits it
+// ends above it; at full resolution a large mesh is split only above
+// low_poly_distortion.
+TEST(Multiresolution, splits_are_decided_on_the_copy)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(sphere_cap_soup(24, 80, 5. * pi / 6.));
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ASSERT_TRUE(surface.number_of_faces() > std::size_t(2 * coarse_faces));
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  auto run = [&](bool greedy_splits, ic::Joint_state& state) {
+    ic::Joint_settings settings;
+    settings.multiresolution_faces = coarse_faces;
+    settings.greedy_splits = greedy_splits;
+    state.is_cut.assign(surface.edges.size(), 0);
+    return ic::optimize_cut_mesh(surface, face_lambda, settings, state);
+  };
+  ic::Joint_state split, unsplit;
+  ASSERT_EQ(run(true, split), SMP::OK);
+  ASSERT_EQ(run(false, unsplit), SMP::OK);
+  std::cout << std::setprecision(5) << "    without splits: E_d " << unsplit.distortion << ", E_s "
+            << ic::seam_length_3d(surface, unsplit.is_cut) << "; split on the copy: E_d " << split.distortion << ", E_s "
+            << ic::seam_length_3d(surface, split.is_cut) << std::endl;
+  ASSERT_GT(unsplit.distortion, ic::default_distortion_target);
+  EXPECT_LE(split.distortion, ic::default_distortion_target);
+  EXPECT_GT(ic::seam_length_3d(surface, split.is_cut), ic::seam_length_3d(surface, unsplit.is_cut));
+  EXPECT_NEAR(split.distortion, ic::mean_distortion(split.chart, split.x), 1e-12);
+  EXPECT_TRUE(split.x.allFinite());
+  EXPECT_EQ(ic::number_of_flipped_faces(split.chart, split.x), 0);
+  const std::vector<char> crossing = ic::Border_barrier_term(split.chart).charts_with_crossing(split.x);
+  EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
+  const ic::Chart_topology topology = ic::chart_topology(split.chart);
+  for(int c = 0; c < topology.number_of_charts; ++c) EXPECT_TRUE(topology.is_disk(c));
+}

@@ -338,7 +338,13 @@ public:
     return count_border_crossings(segments_, x, &segment_chart_, 1, true) > 0;
   }
 
-  /// Per chart (ids of chart_of_faces()): true if its border meets itself at x.
+  /// Per chart (ids of chart_of_faces()): true if its border meets itself
+  /// at x (exact predicates), or if one of its border vertices is on one of
+  /// its segments as the barrier measures it (distance 0 in floating point:
+  /// an infinite energy). The second happens where the predicates see no
+  /// contact: the two sides of a slit of zero width whose vertices differ
+  /// in their last bits (CGAL's boeing.off after the alternation: its map
+  /// started the barrier's solve at an infinite energy, and the run failed).
   std::vector<char> charts_with_crossing(const UV_vector& x) const
   {
     std::vector<char> crossing(number_of_charts_, 0);
@@ -346,6 +352,13 @@ public:
     for(std::size_t i = 0; i < segments_.size(); ++i) segments[segment_chart_[i]].push_back(segments_[i]);
     for(int c = 0; c < number_of_charts_; ++c)
       crossing[c] = count_border_crossings(segments[c], x, nullptr, 1, true) > 0;
+    for_each_candidate_pair(x, nullptr, 0., [&](int v, int j) {
+      double s;
+      Vector2 n;
+      const auto& seg = segments_[j];
+      if(!(point_segment_distance(point(x, v), point(x, seg[0]), point(x, seg[1]), s, n) > 0.))
+        crossing[std::size_t(segment_chart_[j])] = 1;
+    });
     return crossing;
   }
 
