@@ -18,7 +18,7 @@ independent measures of tools/uv_metrics.py (E_d, flips, crossings) beside uv_un
 Needs python3 with numpy (Debian: /usr/bin/python3 with python3-numpy).
 
   /usr/bin/python3 scripts/wild_corpus.py [--meshes DIR...] [--damage holes,dup,...]
-      [--max-faces N] [--timeout S] [--work DIR] [--uv-unwrap EXE] [--metrics uv_metrics.py]
+      [--min-faces N] [--max-faces N] [--timeout S] [--work DIR] [--uv-unwrap EXE] [--metrics uv_metrics.py]
       [--filter SUBSTRING] [--skip NAME,...] [--after NAME] [--every K] [--keep]
 
 Defaults: build/data/meshes (CGAL's data set, extracted by the build) and ../shared/meshes,
@@ -316,6 +316,8 @@ def main():
                                                     os.path.join(ROOT, '..', 'shared', 'meshes')])
     ap.add_argument('--damage', default=','.join(DAMAGES))
     ap.add_argument('--max-faces', type=int, default=130000)
+    ap.add_argument('--min-faces', type=int, default=0,
+                    help='only the meshes of at least N faces before damage (the refined ones count as 100k)')
     ap.add_argument('--timeout', type=float, default=600)
     ap.add_argument('--work', default=os.path.join(ROOT, 'build', 'wild_corpus'))
     ap.add_argument('--uv-unwrap', default=os.path.join(ROOT, 'build', 'bin', 'uv_unwrap'))
@@ -353,6 +355,8 @@ def main():
             if d == 'refine' and not any(100000 <= len(faces) * 4 ** k <= 160000 for k in (1, 2, 3)):
                 continue
             if d != 'refine' and len(faces) > args.max_faces:
+                continue
+            if (100000 if d == 'refine' else len(faces)) < args.min_faces:
                 continue
             rng = random.Random(int(hashlib.md5((stem + d).encode()).hexdigest()[:8], 16))
             try:
