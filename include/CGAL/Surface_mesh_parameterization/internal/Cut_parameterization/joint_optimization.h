@@ -740,20 +740,19 @@ template <typename Surface>
 Error_code split_on_coarse_copy(const Surface& coarse_surface, const Joint_settings& settings, Joint_state& coarse_state)
 {
   if(!settings.greedy_splits || settings.distortion_bound > 0.) return OK;
-  Joint_state solved = coarse_state;
+  const std::vector<char> cuts = coarse_state.is_cut; // where a solve fails
   Error_code status = OK;
   {
-    Scoped_timer timer(solved.timings.final_solve);
-    status = final_solve(coarse_surface, settings, false, solved);
+    Scoped_timer timer(coarse_state.timings.final_solve);
+    status = final_solve(coarse_surface, settings, false, coarse_state);
   }
   if(status == OK)
   {
-    solved.distortion = mean_distortion(solved.chart, solved.x);
-    status = split_where_distorted(coarse_surface, settings, solved);
+    coarse_state.distortion = mean_distortion(coarse_state.chart, coarse_state.x);
+    status = split_where_distorted(coarse_surface, settings, coarse_state);
   }
-  coarse_state.set_work_records(solved); // solved started from a copy of it
   if(status == ERROR_CANCELED) return status;
-  if(status == OK) coarse_state.is_cut = std::move(solved.is_cut);
+  if(status != OK) coarse_state.is_cut = cuts;
   return OK;
 }
 
