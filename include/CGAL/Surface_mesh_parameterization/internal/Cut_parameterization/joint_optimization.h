@@ -101,6 +101,12 @@ struct Joint_settings
   // overlaps itself on more than this many faces is cut into pieces that do
   // not (final_solve_without_box(); 0: never).
   int overlap_partition_faces = 10000;
+  // With global injectivity, after greedy splits on a cut mesh of at most
+  // this many faces: where the final solve started a crossing chart again
+  // and ended above the splits' goal, the split map is also solved with its
+  // crossing charts cut into overlap-free pieces (final_solve_after_splits();
+  // 0: never).
+  int split_pieces_max_faces = 1000;
   // Bounding box: the final solve pulls each chart into a rectangle of this
   // width / height, with this stiffness (0: off); the default is a gentle
   // square (see gentle_bounding_box_stiffness for the measures).
@@ -147,7 +153,7 @@ struct Joint_settings
         && bounding_box_aspect_ratio >= 0. && std::isfinite(bounding_box_aspect_ratio)
         && bounding_box_stiffness >= 0. && std::isfinite(bounding_box_stiffness)
         && bounding_box_distortion_budget >= 0. && multiresolution_faces >= 0 && overlap_partition_faces >= 0
-        && rerouting_rings >= 0
+        && split_pieces_max_faces >= 0 && rerouting_rings >= 0
         && rerouting_allowance >= 0. && std::isfinite(rerouting_allowance)
         && slow_tail.after >= 0 && slow_tail.window >= 1 && slow_tail.ratio >= 0. && std::isfinite(slow_tail.ratio)
         && (distortion_bound == 0. || (distortion_bound >= 4. && std::isfinite(distortion_bound)))
@@ -412,12 +418,14 @@ inline Error_code final_solve_box(const Joint_settings& settings, const Unboxed_
 }
 
 /// The final solve: final_solve_without_box(), then final_solve_box().
+/// `restarted`, if given, tells whether a chart crossed itself and started again.
 template <typename Surface>
 Error_code final_solve(const Surface& surface, const Joint_settings& settings, bool from_tutte_map, Joint_state& state,
-                       const Carried_map* carried = nullptr)
+                       const Carried_map* carried = nullptr, bool* restarted = nullptr)
 {
   Unboxed_final_map unboxed;
   const Error_code status = final_solve_without_box(surface, settings, from_tutte_map, state, unboxed, carried);
+  if(restarted != nullptr) *restarted = unboxed.restart;
   return status != OK ? status : final_solve_box(settings, unboxed, state);
 }
 
@@ -558,6 +566,56 @@ constexpr double low_poly_distortion = 5.;
 /// is split instead (split_on_coarse_copy()).
 constexpr double default_distortion_target = 4.6;
 
+/// Newton iterations at most of each solve of the overlap-free pieces in
+/// final_solve_after_splits(). Their barrier's solves are slow to converge
+/// (pieces apart by piece_gap): on the 8 models of wild_corpus.py cut from
+/// CGAL's mpi.off and mpi_triang.off (none, holes, fins, parts; 2 cores,
+/// while a fuzzer ran), half of their 23 solves of mpi_triang.none stopped at
+/// 500; at most 50 each, all 8 end at E_d 4.02 to 4.59 (at most 500: the
+/// same), 0.1 to 4.4 s (at most 500: 0.2 to 8.7 s; 0.6 to 1.9 s without the
+/// pieces).
+constexpr int split_pieces_newton_iterations = 50;
+
+/// The final solve of `state`, a map that greedy splits left (judged
+/// without the border barrier), with `carried` (the map the splits started
+/// from, carried over their cuts); sets `state.distortion`. With global
+/// injectivity, on a cut mesh of at most `settings.split_pieces_max_faces`
+/// faces, where a chart crossed itself and started again from its carried
+/// or Tutte map, and E_d ends above `goal`, the split map is solved again
+/// with its crossing charts cut into overlap-free pieces instead
+/// (overlap_partition.h, as final_solve_without_box() does for large
+/// overlaps), each piece from its part of the split map; the lower E_d is
+/// kept. On a low-poly model the splits' maps reach low E_d by borders that
+/// cross, and the valid map from which the chart starts again stays far
+/// above: the damaged models of wild_corpus.py cut from CGAL's mpi.off (174
+/// to 195 faces) ended at E_d 5.12 to 5.80 where the undamaged one ends at
+/// 4.59.
+///
+/// Each solve of the pieces stops after split_pieces_newton_iterations.
+template <typename Surface>
+Error_code final_solve_after_splits(const Surface& surface, const Joint_settings& settings, double goal,
+                                    const Carried_map* carried, Joint_state& state)
+{
+  const bool may_cut = settings.global_injectivity && goal > 0. && settings.split_pieces_max_faces > 0
+                       && state.chart.number_of_faces() <= std::size_t(settings.split_pieces_max_faces);
+  Joint_state pieces;
+  if(may_cut) pieces = state;
+  bool restarted = false;
+  Error_code status = final_solve(surface, settings, false, state, carried, &restarted);
+  if(status != OK) return status;
+  state.distortion = mean_distortion(state.chart, state.x);
+  if(!may_cut || !restarted || state.distortion <= goal) return OK;
+  Joint_settings cut_up = settings;
+  cut_up.overlap_partition_faces = 1; // any chart that overlaps itself
+  cut_up.max_newton_iterations = (std::min)(settings.max_newton_iterations, split_pieces_newton_iterations);
+  pieces.set_work(state.work());
+  if((status = final_solve(surface, cut_up, false, pieces)) != OK) return status;
+  pieces.distortion = mean_distortion(pieces.chart, pieces.x);
+  if(pieces.distortion < state.distortion) state = std::move(pieces);
+  else state.set_work(pieces.work());
+  return OK;
+}
+
 /// Greedy splits (greedy_splits.h) of the solved cut mesh in `state`: under
 /// `settings.distortion_bound`, while E_d is above it and a split lowers it;
 /// without a bound, on a map whose E_d is above default_distortion_target
@@ -652,9 +710,8 @@ Error_code split_where_distorted(const Surface& surface, const Joint_settings& s
     Carried_map carried;
     if(settings.global_injectivity) carry_map_over_new_cuts(state.chart, state.x, split.chart, carried);
     state = std::move(split);
-    if((status = final_solve(surface, settings, false, state, settings.global_injectivity ? &carried : nullptr)) != OK)
-      return status;
-    state.distortion = mean_distortion(state.chart, state.x);
+    status = final_solve_after_splits(surface, settings, goal, settings.global_injectivity ? &carried : nullptr, state);
+    if(status != OK) return status;
     if(!(goal > 0. && state.distortion > goal)) break;
   }
   return OK;
