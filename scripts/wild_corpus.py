@@ -378,9 +378,10 @@ def main():
                 os.remove(mesh_file)
     ok = [r for r in rows if r.get('status') == 'ok']
     bad = [r for r in rows if r.get('status') != 'ok' or r.get('flips') or r.get('crossings') or not r.get('unit')]
-    print('\n%d runs: %d ok, %d not a valid atlas or failed; E_d above 4.6: %d; above 30 s: %d' % (
+    print('\n%d runs: %d ok, %d not a valid atlas or failed; E_d above 4.6: %d; above 30 s: %d (%d of up to 130k faces)' % (
         len(rows), len(ok), len(bad), sum(1 for r in ok if (r.get('E_d') or 0) > 4.6),
-        sum(1 for r in rows if r['wall'] > 30)))
+        sum(1 for r in rows if r['wall'] > 30),
+        sum(1 for r in rows if r['wall'] > 30 and (r.get('faces') or 0) <= 130000)))
     print('\nslowest ten (wall time; other engineers\' compiles share the machine: see cpu s and newton):')
     print(HEADER)
     for r in sorted(rows, key=lambda r: -r['wall'])[:10]:
