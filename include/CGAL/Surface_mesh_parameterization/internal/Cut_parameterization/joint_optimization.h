@@ -571,9 +571,9 @@ constexpr double default_distortion_target = 4.6;
 /// (pieces apart by piece_gap): on the 8 models of wild_corpus.py cut from
 /// CGAL's mpi.off and mpi_triang.off (none, holes, fins, parts; 2 cores,
 /// while a fuzzer ran), half of their 23 solves of mpi_triang.none stopped at
-/// 500; at most 50 each, all 8 end at E_d 4.02 to 4.59 (at most 500: the
-/// same), 0.1 to 4.4 s (at most 500: 0.2 to 8.7 s; 0.6 to 1.9 s without the
-/// pieces).
+/// 500; at most 50 each, all 8 end at E_d 4.02 to 4.59 (at most 500: 4.00
+/// to 4.59), 0.1 to 4.4 s (at most 500: 0.2 to 8.7 s; 0.6 to 1.9 s without
+/// the pieces).
 constexpr int split_pieces_newton_iterations = 50;
 
 /// The final solve of `state`, a map that greedy splits left (judged
