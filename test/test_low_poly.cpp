@@ -320,7 +320,7 @@ bool mpi_cut_into_parts(int axis, Surface_mesh& mesh)
 // instead (joint_optimization.h's final_solve_after_splits()). CGAL's mpi.off
 // cut into parts along z (180 faces) ended at E_d 5.45 (measured before the
 // pieces; now 4.43, E_s 7.62 -> 10.24), below the default target now, in a
-// valid atlas (check_cut_result()).
+// valid atlas (check_cut_result()), the same for 1, 2 and 4 threads.
 TEST(Default_target, a_low_poly_model_in_parts_gets_overlap_free_pieces)
 {
   if(std::getenv("CGAL_DATA_DIR") == nullptr) GTEST_SKIP() << "CGAL_DATA_DIR not set";
@@ -331,6 +331,11 @@ TEST(Default_target, a_low_poly_model_in_parts_gets_overlap_free_pieces)
   run_and_check(mesh, run);
   EXPECT_LE(run.result.distortion, ic::default_distortion_target);
   EXPECT_GT(run.result.distortion, 4.);
+  // the same seams, UVs and Newton iterations for any number of threads
+  expect_same_result_for_thread_counts(mesh, {1, 2, 4}, [](Cut_run<Surface_mesh>& r) {
+    r.run();
+    return r.result;
+  });
 }
 
 // A low-poly model whose splits are judged on maps that cross their own
