@@ -3,6 +3,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas_validity.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/distortion_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
@@ -14,18 +15,6 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
-
-/// \ingroup PkgCutParameterizationRef
-/// State reported to the `progress_callback` named parameter.
-struct Cut_and_parameterize_progress
-{
-  const char* phase = "";      ///< "initialize", "alternate", "cut", "split" (a greedy split judged), "final"
-  int pass = 0;                ///< current pass, from 0
-  int alternation = 0;         ///< alternations done in this pass
-  int alternations_per_pass = 0; ///< alternations of one pass (the same in every pass)
-  double epsilon = 0.;         ///< current ε (relative to the mean edge length)
-  double distortion = 0.;      ///< current E_d (of the v-weighted map while alternating)
-};
 
 /// \ingroup PkgCutParameterizationRef
 /// Wall-clock time, in seconds (`std::chrono::steady_clock`), of the phases of
@@ -103,46 +92,28 @@ struct Ignored_face_map
   friend void put(const Ignored_face_map&, const Key&, const Value&) {}
 };
 
-template <typename NamedParameters>
-Joint_settings joint_settings(const NamedParameters& np)
+inline Joint_settings joint_settings(const Cut_parameterization_options& o)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   Joint_settings s;
-  s.lambda = choose_parameter(get_parameter(np, internal_np::lambda), s.lambda);
-  s.epsilon_start = choose_parameter(get_parameter(np, internal_np::epsilon_start), s.epsilon_start);
-  s.epsilon_end = choose_parameter(get_parameter(np, internal_np::epsilon_end), s.epsilon_end);
-  s.iterations_per_epsilon = choose_parameter(get_parameter(np, internal_np::iterations_per_epsilon), s.iterations_per_epsilon);
-  s.gamma = choose_parameter(get_parameter(np, internal_np::gamma), s.gamma);
-  s.passes = choose_parameter(get_parameter(np, internal_np::number_of_passes), s.passes);
-  s.minimum_relative_cut_length = choose_parameter(get_parameter(np, internal_np::minimum_relative_cut_length),
-                                                   s.minimum_relative_cut_length);
-  s.max_newton_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                             s.max_newton_iterations);
-  s.bounding_box_aspect_ratio = choose_parameter(get_parameter(np, internal_np::bounding_box_aspect_ratio),
-                                                 s.bounding_box_aspect_ratio);
-  // a box asked for by its aspect ratio is filled tightly; the default one is gentle
-  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::bounding_box_aspect_ratio_t>::value)
-    s.bounding_box_stiffness = tight_bounding_box_stiffness;
-  s.bounding_box_stiffness = choose_parameter(get_parameter(np, internal_np::bounding_box_stiffness),
-                                              s.bounding_box_stiffness);
-  // the box a user asks for is kept whatever it costs; the default one stays within a budget
-  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::bounding_box_aspect_ratio_t>::value
-     || !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::bounding_box_stiffness_t>::value)
-    s.bounding_box_distortion_budget = std::numeric_limits<double>::infinity();
-  s.bounding_box_distortion_budget = choose_parameter(get_parameter(np, internal_np::bounding_box_distortion_budget),
-                                                      s.bounding_box_distortion_budget);
-  s.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), s.distortion_bound);
-  s.multiresolution_faces = choose_parameter(get_parameter(np, internal_np::multiresolution_faces),
-                                             s.multiresolution_faces);
-  s.global_injectivity = choose_parameter(get_parameter(np, internal_np::global_injectivity), s.global_injectivity);
-  s.inner_solver = choose_parameter(get_parameter(np, internal_np::inner_solver), s.inner_solver);
-  s.packing.texture_size = choose_parameter(get_parameter(np, internal_np::texture_size), s.packing.texture_size);
-  s.packing.padding = choose_parameter(get_parameter(np, internal_np::padding), s.packing.padding);
-  s.packing.world_units = choose_parameter(get_parameter(np, internal_np::world_units), s.packing.world_units);
-  const std::function<bool(const Cut_and_parameterize_progress&)> callback =
-    choose_parameter(get_parameter(np, internal_np::progress_callback),
-                     std::function<bool(const Cut_and_parameterize_progress&)>());
+  s.lambda = o.lambda;
+  s.epsilon_start = o.epsilon_start;
+  s.epsilon_end = o.epsilon_end;
+  s.iterations_per_epsilon = o.iterations_per_epsilon;
+  s.gamma = o.gamma;
+  s.passes = o.number_of_passes;
+  s.minimum_relative_cut_length = o.minimum_relative_cut_length;
+  s.max_newton_iterations = o.number_of_iterations;
+  s.bounding_box_aspect_ratio = o.bounding_box_aspect_ratio_value();
+  s.bounding_box_stiffness = o.bounding_box_stiffness_value();
+  s.bounding_box_distortion_budget = o.bounding_box_distortion_budget_value();
+  s.distortion_bound = o.distortion_bound;
+  s.multiresolution_faces = o.multiresolution_faces;
+  s.global_injectivity = o.global_injectivity;
+  s.inner_solver = o.inner_solver;
+  s.packing.texture_size = o.texture_size;
+  s.packing.padding = o.padding;
+  s.packing.world_units = o.world_units;
+  const std::function<bool(const Cut_and_parameterize_progress&)> callback = o.progress_callback;
   if(callback)
     s.progress = [callback](const Joint_progress& p) {
       Cut_and_parameterize_progress q;
@@ -458,11 +429,12 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   const Error_code indexing = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
   if(indexing != OK) return finish(indexing);
   result.number_of_isolated_vertices = surface.isolated_vertices;
-  if(choose_parameter(get_parameter(np, internal_np::reject_degenerate_faces), false) &&
+  const Cut_parameterization_options options = cut_parameterization_options_from(np);
+  if(options.reject_degenerate_faces &&
      ic::number_of_degenerate_faces(surface) > 0)
     return finish(ERROR_DEGENERATE_FACE);
 
-  const ic::Joint_settings settings = internal::cut::joint_settings(np);
+  const ic::Joint_settings settings = internal::cut::joint_settings(options);
   std::vector<double> face_lambda(surface.number_of_faces());
   const auto lambda_map = choose_parameter(get_parameter(np, internal_np::face_lambda_map),
                                            CGAL::Constant_property_map<face_descriptor, double>(1.));
