@@ -235,11 +235,35 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 /// alternately on E = Σ_f A_f (v_f² + γ) Ψ_f(u) + λ A_f (ε |∇v|² + (1−v_f)²/(4ε))
 /// while ε decreases from `epsilon_start` to `epsilon_end`; cuts are then
 /// extracted along the faces with v < 1/2 and the cut mesh is re-optimized
-/// without weights (v = 1).
+/// without weights (v = 1) (\ref Cut_parameterization_method).
+///
+/// The result is a texture atlas: if a chart's UV border crosses itself
+/// after the final solve, that solve is redone from a Tutte embedding with a
+/// border barrier that never lets a border cross; the charts are then
+/// rotated, scaled by one common factor (equal texel density, reported in
+/// `uv_scale`) and packed into the unit square (\ref Cut_parameterization_atlas).
+/// `distortion` is E_d of the map in 3D units (the UVs divided by `uv_scale`).
+///
+/// Low-poly inputs, whose faces are too large for the field v to place cuts
+/// (a final E_d above 5, or above 4.6 on small meshes), get cuts added
+/// greedily, one edge path at a time, while each lowers E_d enough for the
+/// seam length it adds (\ref Cut_parameterization_low_poly); not with
+/// `number_of_passes(0)`, where the seams are the given ones only.
+/// Without `distortion_bound`, the final solve of the alternation's seams
+/// runs beside that of the same seams rerouted along cheaper edge paths, and
+/// the rerouted ones are kept if their E_d is at most 0.01 above; both always
+/// run, so the result does not depend on the number of threads.
+///
+/// Degenerate faces (zero area, needles, coincident corners) are accepted
+/// unless `reject_degenerate_faces` is set: their rest shape is clamped to a
+/// height of 1e-4 times their longest side (counted in
+/// `number_of_degenerate_faces`), so no NaN can appear. Vertices in no face
+/// are ignored (counted in `number_of_isolated_vertices`).
 ///
 /// \tparam TriangleMesh a model of `FaceGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
 /// \tparam SeamEdgeMap a `ReadWritePropertyMap`, edge → bool
 /// \tparam HalfedgeUVMap a `WritablePropertyMap`, halfedge → 2D point
+/// \tparam NamedParameters a sequence of named parameters (\ref CGAL::Surface_mesh_parameterization::parameters "of this package" or of %CGAL)
 ///
 /// \param mesh the input triangle mesh: any topology (disks, closed or
 ///   higher-genus surfaces, several boundaries, several components); parts
@@ -251,132 +275,197 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   corner at their target in the adjacent face. Corners shared across a
 ///   non-seam edge get identical UVs, so the map is usable as the vertex UV
 ///   map of `CGAL::Seam_mesh` built from `seam_edge_map` (see `make_seam_mesh()`).
-/// \param np optional named parameters (in `CGAL::Surface_mesh_parameterization::parameters`
-///   unless marked CGAL):
-///   - `lambda`: seam cost λ, relative to the mean edge length; default 1
-///   - `face_lambda_map`: face → double multiplying λ (assisted cutting); default 1
-///   - `forbidden_seam_edge_map`: edge → bool, edges that no seam may use:
-///     the initial cut routes around them, the alternation's cuts and the
-///     multiresolution transfer avoid them. An edge both in `seam_edge_map`
-///     and forbidden gives `ERROR_WRONG_PARAMETER`; flags on border edges are
-///     ignored. Default: none
-///   - `epsilon_start`, `epsilon_end`: ε range, relative to the mean edge length; default 0.1, 0.01
-///   - `iterations_per_epsilon`: alternations per ε; default 3
-///   - `gamma`: default 1e-7
-///   - `number_of_passes`: optimize → cut rounds; default 1
-///   - `minimum_relative_cut_length`: keep cut paths at least this fraction of the longest; default 0.2
-///   - `reject_degenerate_faces`: bool, return `ERROR_DEGENERATE_FACE` on a degenerate face
-///     instead of clamping it; default false
-///   - `face_discontinuity_map`: output face → double, the field v of the last pass
-///   - `progress_callback`: `std::function<bool(const Cut_and_parameterize_progress&)>`;
-///     returning false stops the run with `ERROR_CANCELED` (outputs are then unchanged)
-///   - `global_injectivity`: bool, no chart overlaps itself (a border barrier keeps UV
-///     borders from crossing, see below); default true
-///   - `texture_size`: int ≥ 1, texels per side of the texture; default 1024
-///   - `padding`: double ≥ 0, gap in texels between charts and to the square's
-///     sides; default 2
-///   - `world_units`: bool, keep the 3D scale (charts still packed apart) instead
-///     of scaling the atlas into the unit square; default false
-///   - `bounding_box_aspect_ratio`: double ≥ 0, the final solve pulls each
-///     chart into a rectangle of this width / height (of the chart's area), so
-///     that it fills the atlas better at some cost in distortion; 0 turns the
-///     box off. Default: a square with a gentle pull (stiffness 5) within a
-///     distortion budget; given explicitly, the box is filled tightly
-///     (stiffness 300) unless `bounding_box_stiffness` says otherwise
-///   - `bounding_box_stiffness`: double ≥ 0, how hard the box pulls; 0 turns
-///     the box off. Measured on the 21 meshes of the benchmark with a square:
-///     the default raises the unit-square coverage from 0.535 to 0.610 (mean)
-///     and from 0.354 to 0.471 (min) at E_d +0.023 (mean, +0.044 at most);
-///     300 reaches 0.77 at E_d +0.24. Default 5, or 300 when `bounding_box_aspect_ratio` is given
-///   - `bounding_box_distortion_budget`: double ≥ 0 (may be infinite), the
-///     largest increase of E_d that the box may cost over the final solve
-///     without it; where it costs more, its stiffness is multiplied by 0.7
-///     and the solve redone from the boxed map, at most twice, then the box
-///     is dropped. Default 0.045 (`gentle_bounding_box_distortion_budget`)
-///     for the default box; no limit (the box is kept as asked) once
-///     `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given
-///   - `distortion_bound`: double ≥ 4, the result's E_d must be at most this,
-///     with seams as short as the search finds. Two kinds of trials: on
-///     meshes of at most 25,000 faces, two split trials that add cuts
-///     greedily (see below) from the initial cut until E_d is within the
-///     bound, beside the run at the given λ; and, only where no split trial
-///     reaches the bound (or none ran), whole runs with the seam cost λ
-///     halved (at most 6 times) until E_d is within the bound, or doubled
-///     (at most 3 times) while it is, then one round that cuts the interval
-///     between passing and failing λ in three. The candidates are the
-///     passing split trials and the passing λ run with the shortest seams
-///     (next to split trials, only if its seams are less than 1.5 times
-///     theirs); the seams of each are rerouted along shorter paths (the
-///     ends of seams from the mesh border may slide along it), zipped back
-///     from their tips and rerouted again where the bound allows, and the
-///     shortest win; the bounding box comes last, within what the bound
-///     leaves. If no trial reaches the bound, cuts are added greedily to the
-///     least distorted run and to the run at the given λ; if neither
-///     reaches it, the result with the lowest E_d is returned and
-///     `distortion_bound_met` is false. At most 11 runs (the initial map and
-///     first u-step, which do not depend on λ, done once), two or three at
-///     a time, at once where TBB is linked and the mesh has at most 250,000
-///     faces (the result does not depend on the number of threads; a
-///     progress callback is called by one run at a time, and the split
-///     trials report each split judged, phase "split"). Default: no bound
-///   - `multiresolution_faces`: int ≥ 0; on a mesh of more than twice this
-///     many faces, the alternation decides the cuts on a copy simplified to
-///     about this many faces (CGAL's Surface_mesh_simplification, keeping the
-///     border, the given seams and the input's vertices), the cuts are carried
-///     back as shortest edge paths, and the final solve runs on the input. 0:
-///     always at full resolution. Default 10000 (the benchmark meshes, at most
-///     20k faces, are unchanged)
-///   - `inner_solver`: `Inner_solver`, the solver of every minimization of
-///     the UVs. `Inner_solver::NEWTON` (default): projected Newton, one
-///     factorization of the projected Hessian per iteration.
-///     `Inner_solver::PROXY_QUASI_NEWTON`: that Hessian factorized at a few
-///     iterates only, L-BFGS updates on top of it in between (fewer
-///     factorizations, more iterations, each a gradient and a solve); every
-///     guarantee is the same (no flipped face, no crossing border, the same
-///     result for any number of threads). Measured in the manual ("Inner
-///     solvers"): about half the factorizations for 2-4 times the
-///     iterations, no faster at 10k-40k faces on 2 cores
-///   - `vertex_point_map` (CGAL): default `get(vertex_point, mesh)`
-///   - `number_of_iterations` (CGAL): maximum Newton iterations per u-step; default 500
+/// \param np an optional sequence of named parameters among the ones listed
+///   below (in `CGAL::Surface_mesh_parameterization::parameters`, except
+///   `vertex_point_map` and `number_of_iterations`, %CGAL's). Lengths are
+///   relative to the mean edge length ℓ, so the same values give the same
+///   result on a mesh scaled by any factor. A value out of its range makes
+///   the function return `ERROR_WRONG_PARAMETER` without touching its outputs.
 ///
-/// Low-poly inputs: when the final map has E_d above 5 (faces too large for
-/// the field v to place cuts: a cube, a game asset), cuts are added one at a
-/// time, each the cheapest edge path from the vertex off the seams around
-/// which the map is most distorted to the border of its chart (forbidden
-/// edges and the λ map respected), kept while each lowers E_d by at least
-/// 0.15 per unit of E_s it adds; then the final solve runs again. A map
-/// with E_d between 4.6 and 5 is split the same way until E_d is at most
-/// 4.6, on meshes of at most twice `multiresolution_faces` faces. Where the
-/// result still has E_d above 4.6 on a mesh of at most 2,000 faces, the
-/// search of `distortion_bound` at 4.6 runs from the same input, and its
-/// result is kept if it meets 4.6 (the splits are judged on maps without the
-/// border barrier, which can cross their own border: CGAL's mpi.off, 180
-/// faces, 5.11 -> 4.59 in 3 charts), unless a box is kept whatever it costs
-/// (an explicit `bounding_box_aspect_ratio` or stiffness). Not with
-/// `number_of_passes(0)` (the seams are then the given ones only).
-///
-/// Without `distortion_bound`, where the alternation ran on the mesh itself
-/// (not on a simplified copy), the final solve of its seams runs alongside
-/// (on another core, with TBB) the final solve of the same seams rerouted
-/// along the cheapest edge paths between their nodes within one ring; the
-/// rerouted seams are kept if their E_d is at most 0.01 above. Both always
-/// run, so the result does not depend on the number of threads.
-///
-/// The result is a texture atlas: the final solve runs from the alternation's
-/// map; if a chart's UV border then crosses itself, that solve is redone from a
-/// Tutte embedding of the cut mesh with a border barrier energy term (each
-/// border vertex is repelled from the border segments of its chart that come
-/// close, and no Newton step goes past the first contact), which never lets a
-/// border cross. The charts are then rotated, scaled by one
-/// common factor (equal texel density, reported in `uv_scale`) and packed into
-/// the unit square. `distortion` is E_d of the map in 3D units (the UVs divided
-/// by `uv_scale`).
-///
-/// Degenerate faces (zero area, needles, coincident corners) are accepted
-/// unless `reject_degenerate_faces` is set: their rest shape is clamped to a
-/// height of 1e-4 times their longest side (counted in
-/// `number_of_degenerate_faces`), so no NaN can appear. Vertices in no face
-/// are ignored (counted in `number_of_isolated_vertices`).
+/// \cgalNamedParamsBegin
+///   \cgalParamSectionBegin{All value options at once}
+///   \cgalParamNBegin{cut_parameterization_options}
+///     \cgalParamDescription{every value option below in one struct, e.g. filled by a front end;
+///       a named parameter given beside it overrides its field}
+///     \cgalParamType{`Cut_parameterization_options`}
+///     \cgalParamDefault{`Cut_parameterization_options()`: the defaults below}
+///   \cgalParamNEnd
+///   \cgalParamSectionEnd
+///   \cgalParamSectionBegin{The method}
+///   \cgalParamNBegin{lambda}
+///     \cgalParamDescription{the seam cost λ, relative to ℓ: larger gives fewer and shorter
+///       seams and more distortion (\ref Cut_parameterization_parameters)}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_lambda_map}
+///     \cgalParamDescription{a factor of λ per face (assisted cutting): seams avoid faces with
+///       a large factor and move to faces with a small one (see `visibility_face_lambda()`)}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///       as key type and `double` (> 0, finite) as value type}
+///     \cgalParamDefault{`1` on every face}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{forbidden_seam_edge_map}
+///     \cgalParamDescription{edges that no seam may use: the initial cut routes around them, the
+///       alternation's cuts and the multiresolution transfer avoid them}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{no edge forbidden}
+///     \cgalParamExtra{an edge both in `seam_edge_map` and forbidden gives `ERROR_WRONG_PARAMETER`;
+///       flags on border edges are ignored; `ERROR_FORBIDDEN_EDGES_BLOCK_CUT` when no cut opens
+///       the mesh into disks without them (\ref Cut_parameterization_constraints)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{the result's E_d must be at most this, with seams as short as the
+///       search finds: split trials that add cuts greedily, and runs with λ halved or doubled
+///       (at most 11 runs, two or three at a time with TBB; the result does not depend on the
+///       number of threads); the candidates' seams are then rerouted and zipped where the
+///       bound allows (\ref Cut_parameterization_bound)}
+///     \cgalParamType{`double`, ≥ 4 and finite}
+///     \cgalParamDefault{no bound}
+///     \cgalParamExtra{if no trial reaches the bound, the result with the lowest E_d is
+///       returned and `Cut_and_parameterize_result::distortion_bound_met` is `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{epsilon_start}
+///     \cgalParamDescription{ε of the first alternations, relative to ℓ: the width of the
+///       diffuse cut regions at the start}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{`0.1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{epsilon_end}
+///     \cgalParamDescription{ε is halved while it stays above this value (0.1, 0.05, 0.025,
+///       0.0125 with the defaults); equal to `epsilon_start`, no alternation runs}
+///     \cgalParamType{`double`, > 0 and ≤ `epsilon_start`}
+///     \cgalParamDefault{`0.01`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{iterations_per_epsilon}
+///     \cgalParamDescription{alternations (u-step, then v-step) per value of ε}
+///     \cgalParamType{`int`, ≥ 1}
+///     \cgalParamDefault{`3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{gamma}
+///     \cgalParamDescription{γ in the distortion weight v² + γ of the u-steps: keeps every
+///       face's weight positive, so that a face with v = 0 still cannot flip}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{`1e-7`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_passes}
+///     \cgalParamDescription{rounds of "alternate, extract cuts, cut"; later passes extend the
+///       seams; 0: only the initial cut and the final solve. Stops early when a pass finds
+///       no new cut}
+///     \cgalParamType{`int`, ≥ 0}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_relative_cut_length}
+///     \cgalParamDescription{a cut branch is kept only if it is at least this fraction of the
+///       longest first branch of the pass (0 keeps every branch)}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{`0.2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the most projected Newton iterations of one minimization of the
+///       UVs (the first u-step of a pass and the final solve; the other u-steps use at most 50)}
+///     \cgalParamType{`int`, ≥ 1 (%CGAL's named parameter)}
+///     \cgalParamDefault{`500`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{multiresolution_faces}
+///     \cgalParamDescription{on a mesh of more than twice this many faces, the cuts are decided
+///       on a copy simplified to about this many faces, carried back as shortest edge paths,
+///       and the final solve runs on the input (\ref Cut_parameterization_large); 0: always
+///       at full resolution}
+///     \cgalParamType{`int`, ≥ 0}
+///     \cgalParamDefault{`10000`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{inner_solver}
+///     \cgalParamDescription{the solver of every minimization of the UVs: projected Newton, or
+///       its Hessian factorized at a few iterates with L-BFGS updates in between (fewer
+///       factorizations, more iterations, the same guarantees; \ref Cut_parameterization_inner_solvers)}
+///     \cgalParamType{`Inner_solver`}
+///     \cgalParamDefault{`Inner_solver::NEWTON`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{reject_degenerate_faces}
+///     \cgalParamDescription{`true`: a degenerate face (height below 1e-4 times its longest
+///       side) makes the function return `ERROR_DEGENERATE_FACE` before any work; `false`:
+///       such faces are clamped and counted}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices (converted to `double`)}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamSectionEnd
+///   \cgalParamSectionBegin{The atlas}
+///   \cgalParamNBegin{global_injectivity}
+///     \cgalParamDescription{`true`: no chart overlaps itself (a border barrier in the final
+///       solve keeps UV borders from crossing), and with the packing no chart overlaps
+///       another; `false`: no flipped face only (\ref Cut_parameterization_atlas_injectivity)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{texture_size}
+///     \cgalParamDescription{texels per side of the square texture the atlas is packed for; it
+///       sets the unit of `padding`}
+///     \cgalParamType{`int`, ≥ 1}
+///     \cgalParamDefault{`1024`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{padding}
+///     \cgalParamDescription{gap in texels between charts and to the square's sides, lowered
+///       where the charts could not be that far apart (\ref Cut_parameterization_atlas_packing)}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{world_units}
+///     \cgalParamDescription{`true`: keep the 3D scale (`uv_scale` 1, charts still packed
+///       apart) instead of scaling the atlas into the unit square}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bounding_box_aspect_ratio}
+///     \cgalParamDescription{the final solve pulls each chart into a rectangle of this width /
+///       height and of the chart's area, so that it fills the atlas better at some cost in
+///       distortion; 0: no box (\ref Cut_parameterization_atlas_box)}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`1` (a square) with a gentle pull; given explicitly, a tight box}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bounding_box_stiffness}
+///     \cgalParamDescription{how hard the box pulls; 0: no box}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`gentle_bounding_box_stiffness` (5), or `tight_bounding_box_stiffness`
+///       (300) when `bounding_box_aspect_ratio` is given
+///       (`Cut_parameterization_options::bounding_box_stiffness_value()`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bounding_box_distortion_budget}
+///     \cgalParamDescription{the largest increase of E_d the box may cost over the final solve
+///       without it; where it costs more, its stiffness is multiplied by 0.7 and the solve
+///       redone, at most twice, then the box is dropped}
+///     \cgalParamType{`double`, ≥ 0 (may be infinite)}
+///     \cgalParamDefault{`gentle_bounding_box_distortion_budget` (0.045) for the default box; no
+///       limit once `bounding_box_aspect_ratio` or `bounding_box_stiffness` is given
+///       (`Cut_parameterization_options::bounding_box_distortion_budget_value()`)}
+///   \cgalParamNEnd
+///   \cgalParamSectionEnd
+///   \cgalParamSectionBegin{Outputs and control}
+///   \cgalParamNBegin{face_discontinuity_map}
+///     \cgalParamDescription{output: the discontinuity field v of the last pass, in (0, 1] (1
+///       everywhere if no pass ran); written only on success}
+///     \cgalParamType{a `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///       as key type and `double` as value type}
+///     \cgalParamDefault{none: v is not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called after the initial embedding, after every alternation, after
+///       each cut, each split judged and at the end; returning `false` stops the run with
+///       `ERROR_CANCELED`, the outputs unchanged. Under `distortion_bound`, called by one run
+///       at a time}
+///     \cgalParamType{a callable as `bool(const Cut_and_parameterize_progress&)`, e.g. a
+///       `std::function`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamSectionEnd
+/// \cgalNamedParamsEnd
 ///
 /// \return a result whose `error` is `OK` or one of: `ERROR_EMPTY_MESH` (no
 ///   face), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE` (a
@@ -390,9 +479,11 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` (a factorization or solve failed),
 ///   `ERROR_NO_1_TO_1_MAPPING` (the final map would have a flipped face or a
 ///   non-finite UV; never returned on any mesh tested), `ERROR_CANCELED`.
-///   On any error the outputs are left unchanged.
 ///
-/// \pre the mesh is a triangle mesh
+/// \pre `mesh` is a model of `FaceGraph`; faces that are not triangles give
+///   `ERROR_NON_TRIANGULAR_MESH` rather than failing an assertion
+/// \pre `seam_edge_map` and `uvmap` are defined on every edge and halfedge of `mesh`
+/// \post on error, `seam_edge_map`, `uvmap` and `face_discontinuity_map` are left unchanged
 /// \post on success: every UV is finite, no face of the UV map is flipped,
 ///   no two UV border segments cross (with `global_injectivity`), every UV lies
 ///   in [0,1]² (unless `world_units`) with charts at least `padding` texels
@@ -402,8 +493,8 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
 ///   cutting along the seams leaves every connected component a topological
 ///   disk (checked by assertions in debug builds)
 ///
-/// \sa \ref PkgCutParameterizationNamedParameters (types, defaults and valid
-///   values of the named parameters), \ref Chapter_Cut_parameterization
+/// \sa \ref Chapter_Cut_parameterization, `Cut_parameterization_options`,
+///   `make_seam_mesh()`, `write_OBJ_with_uvs()`
 template <typename TriangleMesh, typename SeamEdgeMap, typename HalfedgeUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Cut_and_parameterize_result

@@ -30,6 +30,8 @@ constexpr Error_code ERROR_FORBIDDEN_EDGES_BLOCK_CUT = Error_code(ERROR_WRONG_PA
 /// \ingroup PkgCutParameterizationRef
 /// Message for any code of CGAL's `Error_code` or of this package (CGAL's own
 /// table is off by one from code 4 on; this one is not).
+/// \pre none: any value is accepted
+/// \post the result is a non-null static string ("Unknown error" for a value that is no code)
 inline const char* error_message(Error_code code)
 {
   switch(int(code))
@@ -56,6 +58,8 @@ inline const char* error_message(Error_code code)
 /// \ingroup PkgCutParameterizationRef
 /// Short identifier of a code, such as "ERROR_DEGENERATE_FACE" (and "ok" for
 /// `OK`), for logs and JSON.
+/// \pre none: any value is accepted
+/// \post the result is a non-null static string ("ERROR_UNKNOWN" for a value that is no code)
 inline const char* error_name(Error_code code)
 {
   switch(int(code))

@@ -29,11 +29,24 @@ struct Cut_and_parameterize_progress
 
 /// \ingroup PkgCutParameterizationRef
 /// The value options of `cut_and_parameterize()`, one field per named
-/// parameter of the same name (the property maps stay named parameters).
-/// Pass it whole with the named parameter `cut_parameterization_options`;
-/// a named parameter given beside it overrides its field. A field left
-/// unset (`std::nullopt`) takes the value that the library's rule gives it
-/// (see `bounding_box_stiffness_value()` and the functions beside it).
+/// parameter of the same name (the property maps stay named parameters);
+/// each field's meaning, range and default are in the named-parameter table
+/// of `cut_and_parameterize()`.
+/// Pass it whole with the named parameter
+/// `parameters::cut_parameterization_options()`; a named parameter given
+/// beside it overrides its field. A field left unset (`std::nullopt`) takes
+/// the value that the library's rule gives it (see
+/// `bounding_box_stiffness_value()` and the functions beside it), so front
+/// ends leave unset what their user did not give.
+///
+/// \code{.cpp}
+/// namespace SMP = CGAL::Surface_mesh_parameterization;
+/// SMP::Cut_parameterization_options options;
+/// options.lambda = 2.;
+/// options.bounding_box_aspect_ratio = 2.; // a tight 2:1 box
+/// SMP::cut_and_parameterize(mesh, seams, uvmap,
+///   SMP::parameters::cut_parameterization_options(options, SMP::parameters::number_of_passes(2)));
+/// \endcode
 struct Cut_parameterization_options
 {
   // the method
@@ -61,10 +74,12 @@ struct Cut_parameterization_options
   std::function<bool(const Cut_and_parameterize_progress&)> progress_callback;
 
   /// Width / height of the box each chart is pulled into (0: no box).
+  /// \post the field if set, else 1
   double bounding_box_aspect_ratio_value() const { return bounding_box_aspect_ratio.value_or(1.); }
 
   /// The box's stiffness: as given, else tight (300) for a box asked for by
   /// its aspect ratio, else gentle (5) for the default square.
+  /// \post the field if set, else `tight_bounding_box_stiffness` or `gentle_bounding_box_stiffness`
   double bounding_box_stiffness_value() const
   {
     if(bounding_box_stiffness) return *bounding_box_stiffness;
@@ -74,6 +89,7 @@ struct Cut_parameterization_options
   /// The largest E_d increase the box may cost: as given, else none for a
   /// box the user asked for (aspect ratio or stiffness given), else the
   /// default box's budget (0.045).
+  /// \post the field if set, else +∞ or `gentle_bounding_box_distortion_budget`
   double bounding_box_distortion_budget_value() const
   {
     if(bounding_box_distortion_budget) return *bounding_box_distortion_budget;
@@ -84,14 +100,27 @@ struct Cut_parameterization_options
 
 namespace internal_np { enum cut_parameterization_options_t { cut_parameterization_options }; }
 namespace parameters {
-/// Named parameter: a whole `Cut_parameterization_options`; the other named
-/// parameters of the same pack override its fields.
+/// \ingroup PkgCutParameterizationRef
+/// Named parameter of `cut_and_parameterize()`: a whole
+/// `Cut_parameterization_options`; the other named parameters of the same
+/// pack override its fields. This overload starts a pack.
+/// \tparam K `Cut_parameterization_options`
+/// \param k the options
+/// \post the pack holds a copy of `k` (later changes to `k` do not reach it)
 template <typename K>
 CGAL::Named_function_parameters<K, internal_np::cut_parameterization_options_t>
 cut_parameterization_options(const K& k)
 {
   return CGAL::Named_function_parameters<K, internal_np::cut_parameterization_options_t>(k);
 }
+/// \ingroup PkgCutParameterizationRef
+/// Named parameter of `cut_and_parameterize()`: a whole
+/// `Cut_parameterization_options`, added to the pack `pack` (of this package
+/// or of %CGAL), whose other named parameters override its fields.
+/// \tparam K `Cut_parameterization_options`
+/// \param k the options
+/// \param pack the named parameters it is added to
+/// \post the pack holds a copy of `k` in front of `pack`
 template <typename K, typename T, typename Tag, typename Base>
 CGAL::Named_function_parameters<K, internal_np::cut_parameterization_options_t,
                                 CGAL::Named_function_parameters<T, Tag, Base>>
@@ -117,9 +146,55 @@ void read_named_parameter(const NamedParameters& np, Tag tag, Field& field)
 } // namespace cut
 } // namespace internal
 
+/// \ingroup PkgCutParameterizationRef
 /// The options that the named parameters `np` give: those of the named
 /// parameter `cut_parameterization_options` if given (else the defaults),
 /// each overridden by the named parameter of its name where `np` has it.
+/// This is how `cut_and_parameterize()` reads its value options; front ends
+/// may call it to see what a pack amounts to.
+///
+/// \tparam NamedParameters a sequence of named parameters
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{cut_parameterization_options}
+///     \cgalParamDescription{the options to start from}
+///     \cgalParamType{`Cut_parameterization_options`}
+///     \cgalParamDefault{`Cut_parameterization_options()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{lambda}
+///     \cgalParamDescription{overrides the field of the same name; so does every value named
+///       parameter of `cut_and_parameterize()`: `distortion_bound`, `epsilon_start`,
+///       `epsilon_end`, `iterations_per_epsilon`, `gamma`, `number_of_passes`,
+///       `minimum_relative_cut_length`, `number_of_iterations`, `multiresolution_faces`,
+///       `inner_solver`, `reject_degenerate_faces`, `global_injectivity`, `texture_size`,
+///       `padding`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
+///       `bounding_box_distortion_budget`, `progress_callback` (their types and ranges are in
+///       the table of `cut_and_parameterize()`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{the field of `cut_parameterization_options`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{inner_solver}
+///     \cgalParamDescription{overrides `Cut_parameterization_options::inner_solver`}
+///     \cgalParamType{`Inner_solver`}
+///     \cgalParamDefault{the field of `cut_parameterization_options`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bounding_box_stiffness}
+///     \cgalParamDescription{sets `Cut_parameterization_options::bounding_box_stiffness`
+///       (left unset when not given, so that the library's rule decides)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{the field of `cut_parameterization_options`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{overrides `Cut_parameterization_options::progress_callback`}
+///     \cgalParamType{a callable as `bool(const Cut_and_parameterize_progress&)`}
+///     \cgalParamDefault{the field of `cut_parameterization_options`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre none: values are not checked here (`cut_and_parameterize()` checks them)
+/// \post a field is unset (`std::nullopt`) only if it is unset in the given
+///   options and its named parameter is not in `np`
 template <typename NamedParameters>
 Cut_parameterization_options cut_parameterization_options_from(const NamedParameters& np)
 {

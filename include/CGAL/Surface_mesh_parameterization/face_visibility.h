@@ -77,31 +77,53 @@ constexpr std::size_t visibility_rays_per_report = 65536;
 /// faces; faces are processed in parallel with TBB when linked. The result
 /// does not depend on the number of threads.
 ///
-/// \pre `mesh` is a triangle mesh.
-/// \post every face gets a value in [0, 1]; a degenerate face (no normal)
-///       gets 1.
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VisibilityMap a `WritablePropertyMap` with
+///   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `double` as value type
+/// \tparam NamedParameters a sequence of named parameters
 ///
-/// \param mesh a model of `FaceListGraph`
-/// \param visibility a `WritablePropertyMap`, face → `double`
-/// \param np optional named parameters:
-///   - `number_of_rays`: rays per face, ≥ 1 (default 64)
-///   - `maximum_distance`: farther faces do not block (default: no limit)
-///   - `vertex_point_map`: the points of the vertices (default: the mesh's)
-///   - `progress_callback`: callable as `bool(double)`, e.g.
-///     `std::function<bool(double)>`: called with the fraction of the faces
-///     done, in [0, 1]: 0 before the work starts, then after each block of
-///     faces (65,536 rays: 1,024 faces at 64 rays), the last time with 1;
-///     one call at a time, from the calling thread. Returning false stops
-///     the computation with `ERROR_CANCELED`, `visibility` unchanged (the
-///     same convention as `cut_and_parameterize()`'s `progress_callback`,
-///     whose reports are a `Cut_and_parameterize_progress`). Default: none
+/// \param mesh the mesh
+/// \param visibility output: the visibility of each face
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_rays}
+///     \cgalParamDescription{rays cast per face}
+///     \cgalParamType{`int`, ≥ 1}
+///     \cgalParamDefault{`64`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_distance}
+///     \cgalParamDescription{faces farther than this from a face's centroid do not block its rays}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with the fraction of the faces done, in [0, 1]: 0 before the
+///       work starts, then after each block of faces (65,536 rays: 1,024 faces at 64 rays),
+///       the last time with 1; one call at a time, from the calling thread. Returning `false`
+///       stops the computation with `ERROR_CANCELED`, `visibility` unchanged (the convention
+///       of `cut_and_parameterize()`'s `progress_callback`)}
+///     \cgalParamType{a callable as `bool(double)`, e.g. `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \return `OK`; `ERROR_EMPTY_MESH` with no face;
 ///         `ERROR_NON_TRIANGULAR_MESH` if a face is not a triangle;
 ///         `ERROR_WRONG_PARAMETER` for fewer than 1 ray or a maximum
 ///         distance that is not positive; `ERROR_CANCELED` if the
-///         `progress_callback` returned false. On error `visibility` is
-///         left unchanged.
+///         `progress_callback` returned false.
+///
+/// \pre every face of `mesh` is a triangle (else `ERROR_NON_TRIANGULAR_MESH`)
+/// \post on `OK`, every face gets a value in [0, 1]; a degenerate face (no
+///       normal) gets 1
+/// \post on error, `visibility` is left unchanged
 template <typename TriangleMesh, typename VisibilityMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code face_visibility(const TriangleMesh& mesh, VisibilityMap visibility,
@@ -206,7 +228,10 @@ Error_code face_visibility(const TriangleMesh& mesh, VisibilityMap visibility,
 /// so that the factors' area-weighted geometric mean is 1 and the overall
 /// amount of seams stays about the same.
 ///
-/// \pre `mesh` is a triangle mesh; every visibility is in [0, 1].
+/// \pre `mesh` is a triangle mesh; every visibility is in [0, 1] (else
+///      `ERROR_WRONG_PARAMETER`).
+/// \post on `OK`, every factor is positive and finite, and their
+///       area-weighted geometric mean is 1 (up to rounding)
 /// \param mesh a model of `FaceListGraph`
 /// \param visibility a `ReadablePropertyMap`, face → `double` in [0, 1]
 /// \param lambda a `WritablePropertyMap`, face → `double`: the factors (left
@@ -245,6 +270,10 @@ Error_code visibility_face_lambda(const TriangleMesh& mesh, const VisibilityMap&
 /// The mean visibility along the seams, weighted by edge length: each seam
 /// edge counts with the mean visibility of its faces. 0 when there is no
 /// seam. Lower is better hidden.
+///
+/// \pre `mesh` is a model of `FaceListGraph`; `seams` is defined on its
+///      edges, `visibility` on its faces
+/// \post the result is in [0, 1] when every visibility is
 template <typename TriangleMesh, typename SeamMap, typename VisibilityMap>
 double seam_visibility(const TriangleMesh& mesh, const SeamMap& seams, const VisibilityMap& visibility)
 {

@@ -13,6 +13,13 @@ namespace Surface_mesh_parameterization {
 /// `CGAL::Seam_mesh` expects: edges on the mesh's boundary are unflagged
 /// (CGAL ignores them as seams), and exactly the vertices of the remaining
 /// seam edges are flagged. Returns the number of seam edges.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam SeamEdgeMap a `ReadWritePropertyMap`, edge → `bool`
+/// \tparam SeamVertexMap a `WritablePropertyMap`, vertex → `bool`
+/// \pre `seam_edge_map` is defined on every edge of `mesh`
+/// \post no border edge is flagged in `seam_edge_map`; a vertex is flagged in
+///   `seam_vertex_map` if and only if it is an end of a flagged edge
 template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
 std::size_t normalize_seam_maps(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map,
                                 SeamVertexMap seam_vertex_map)
@@ -37,7 +44,16 @@ std::size_t normalize_seam_maps(const TriangleMesh& mesh, SeamEdgeMap seam_edge_
 /// `seam_vertex_map` and setting the seam mesh's seam counter, which CGAL
 /// only updates through `add_seam()`. The UV map written by
 /// `cut_and_parameterize()` (keyed by halfedges of `mesh`) is then a valid
-/// vertex UV map of the seam mesh, for CGAL's parameterizers and I/O.
+/// vertex UV map of the seam mesh, for CGAL's parameterizers and I/O
+/// (e.g. `Symmetric_dirichlet_parameterizer_3` through
+/// `CGAL::Surface_mesh_parameterization::parameterize()`).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam SeamEdgeMap a `ReadWritePropertyMap`, edge → `bool`
+/// \tparam SeamVertexMap a `ReadWritePropertyMap`, vertex → `bool`
+/// \pre `mesh` is a triangle mesh; the maps outlive the seam mesh, which refers to them
+/// \post the maps are normalized as by `normalize_seam_maps()`, and the seam
+///   mesh's number of seam edges is that of `seam_edge_map`
 template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
 CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>
 make_seam_mesh(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, SeamVertexMap seam_vertex_map)

@@ -111,10 +111,29 @@ auto vertex_points(const TriangleMesh& mesh, const NamedParameters& np)
 /// `uvmap` is keyed either by halfedges (UV of the corner at `target(h)` in
 /// `face(h)`, as written by `cut_and_parameterize()`) or by vertices
 /// (e.g. of a `CGAL::Seam_mesh`).
-/// Named parameters: `vertex_point_map` (CGAL); `uv_scale` (UV length per 3D
-/// length, e.g. `Cut_and_parameterize_result::uv_scale` of a packed atlas: the
-/// UVs are divided by it; default 1).
-/// \pre `f` is a triangle
+///
+/// \param f the face
+/// \param mesh the mesh
+/// \param uvmap the UV map
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{uv_scale}
+///     \cgalParamDescription{UV length per 3D length of the map measured, e.g.
+///       `Cut_and_parameterize_result::uv_scale` of a packed atlas: the UVs are divided by it}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `f` is a face of `mesh` and a triangle
+/// \post the result is ≥ 4, or +∞
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
@@ -132,8 +151,30 @@ double face_distortion(typename boost::graph_traits<TriangleMesh>::face_descript
 /// (A_f: 3D area), as in the paper's Table 1. Minimum 4; +∞ if any face is
 /// flipped or collapsed in UV. Degenerate 3D faces (zero area, or height
 /// below 1e-4 times the longest side) have no weight.
-/// Named parameters: `vertex_point_map` (CGAL), `uv_scale`; `uvmap` as in `face_distortion()`.
+/// `uvmap` as in `face_distortion()`.
+///
+/// \param mesh the mesh
+/// \param uvmap the UV map
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{uv_scale}
+///     \cgalParamDescription{UV length per 3D length of the map measured, e.g.
+///       `Cut_and_parameterize_result::uv_scale` of a packed atlas: the UVs are divided by it}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \pre `mesh` is a non-empty triangle mesh
+/// \post the result is ≥ 4, +∞ if a face is flipped or collapsed, or NaN if
+///   every face is degenerate
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
@@ -158,6 +199,8 @@ double distortion_energy(const TriangleMesh& mesh, const UVMap& uvmap,
 ///
 /// Number of faces whose UV triangle has a non-positive signed area.
 /// `uvmap` as in `face_distortion()`.
+/// \pre `mesh` is a triangle mesh
+/// \post the result is at most `num_faces(mesh)`; a face with a non-finite UV counts
 template <typename TriangleMesh, typename UVMap>
 std::size_t number_of_flipped_faces(const TriangleMesh& mesh, const UVMap& uvmap)
 {
@@ -320,10 +363,22 @@ double uv_overlap_area(const TriangleMesh& mesh, const UVMap& uvmap, std::size_t
 /// clamped by `cut_and_parameterize()` (or refused with its
 /// `reject_degenerate_faces` option) and have no weight in
 /// `distortion_energy()`.
-/// Named parameters: `vertex_point_map` (CGAL); `uv_scale` (UV length per 3D
-/// length, e.g. `Cut_and_parameterize_result::uv_scale` of a packed atlas: the
-/// UVs are divided by it; default 1).
-/// \pre `f` is a triangle
+///
+/// \param f the face
+/// \param mesh the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `f` is a face of `mesh` and a triangle
+/// \post the result does not depend on any UV
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 bool is_degenerate_face(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh,
                         const NamedParameters& np = CGAL::parameters::default_values())
@@ -335,6 +390,21 @@ bool is_degenerate_face(typename boost::graph_traits<TriangleMesh>::face_descrip
 /// \ingroup PkgCutParameterizationRef
 ///
 /// Total 3D area of the mesh's faces.
+///
+/// \param mesh the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `mesh` is a triangle mesh
+/// \post the result is ≥ 0 (0 without faces), or NaN if a point is not finite
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double surface_area(const TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -356,7 +426,22 @@ double surface_area(const TriangleMesh& mesh, const NamedParameters& np = CGAL::
 /// The seam length E_s = L / sqrt(A / π): L the total 3D length of the edges
 /// flagged in `seam_edge_map` (each once; edges on the mesh's own boundary
 /// excluded), A the total 3D area. 0 for no seam.
-/// Named parameters: `vertex_point_map` (CGAL).
+///
+/// \param mesh the mesh
+/// \param seam_edge_map the seams: a `ReadablePropertyMap`, edge → `bool`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `mesh` is a triangle mesh
+/// \post the result is ≥ 0, and 0 when no edge off the boundary is flagged
 template <typename TriangleMesh, typename SeamEdgeMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double seam_length(const TriangleMesh& mesh, const SeamEdgeMap& seam_edge_map,

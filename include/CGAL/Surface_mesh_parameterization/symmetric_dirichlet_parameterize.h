@@ -63,43 +63,73 @@ void write_vertex_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 /// the mesh's area), or from the UVs in `uvmap`, and runs projected Newton
 /// (analytic eigensystem of Ψ, sparse Cholesky with the symbolic analysis
 /// done once) with a line search that never lets a face collapse.
-///
-/// Stopping rule: the Newton decrement -gᵀd, divided by Σ_f w_f A_f, falls
-/// below `stopping_tolerance`. Both scale with the square of the mesh size,
-/// so the same mesh scaled by any factor stops at the same map up to scale.
+/// `Symmetric_dirichlet_parameterizer_3` offers it as a model of %CGAL's
+/// `Parameterizer_3` concept.
 ///
 /// Works through the seam-mesh convention: with `TriangleMesh` a
 /// `CGAL::Seam_mesh`, the mesh is the one opened by the seams and `uvmap` is
 /// keyed by its vertices, i.e. by halfedges of the underlying mesh.
 ///
-/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
-/// \tparam VertexUVMap a `ReadWritePropertyMap` from vertex descriptors to a 2D point type
-///
-/// \param mesh a topological disk, or several disjoint ones (each then gets its own circle)
-/// \param uvmap output UVs (and input when `initialize_from_uv_map(true)`)
-/// \param np optional named parameters:
-///   - `vertex_point_map` (CGAL): 3D positions; default `get(vertex_point, mesh)`
-///   - `face_weight_map`: face → double weight w_f ≥ 0, not all zero; default 1.
-///     Weights below 1e-7 times the mean are raised to that floor, so every
-///     face keeps a barrier against collapse.
-///   - `initialize_from_uv_map`: bool, start from `uvmap` (must have no flipped face); default false
-///   - `number_of_iterations` (CGAL): maximum Newton iterations; default 500
-///   - `stopping_tolerance`: double; default 1e-9
-///
 /// Degenerate faces (zero area, needles, coincident corners) are accepted:
 /// their rest shape is clamped to a height of 1e-4 times their longest side,
 /// so they stay non-flipped and produce no NaN.
 ///
-/// \pre every face is a triangle
-/// \post on `OK`, every face has a UV triangle of positive signed area
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam VertexUVMap a `ReadWritePropertyMap` from vertex descriptors to a 2D point type
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param mesh a topological disk, or several disjoint ones (each then gets its own circle)
+/// \param uvmap output UVs (and input when `initialize_from_uv_map(true)`)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type (%CGAL's named parameter)}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_weight_map}
+///     \cgalParamDescription{the weight w_f of each face in the energy; weights below 1e-7
+///       times the mean are raised to that floor, so every face keeps a barrier against
+///       collapse}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///       as key type and `double` (≥ 0, finite, not all zero) as value type}
+///     \cgalParamDefault{`1` on every face}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{initialize_from_uv_map}
+///     \cgalParamDescription{`true`: start from the UVs already in `uvmap` (finite, no flipped
+///       face) instead of a Tutte embedding}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the most projected Newton iterations (0: the initial map is
+///       returned as is)}
+///     \cgalParamType{`int`, ≥ 0 (%CGAL's named parameter)}
+///     \cgalParamDefault{`500`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stopping_tolerance}
+///     \cgalParamDescription{Newton stops when its decrement -gᵀd divided by Σ_f w_f A_f falls
+///       below this value: both scale with the square of the mesh's size, so the same mesh
+///       scaled by any factor stops at the same map up to scale}
+///     \cgalParamType{`double`, ≥ 0}
+///     \cgalParamDefault{`1e-9`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///   `ERROR_NO_TOPOLOGICAL_DISC`, `ERROR_NON_FINITE_COORDINATE`, `ERROR_NON_MANIFOLD` (pinched vertex, or two edges joining the same two vertices),
 ///   `ERROR_WRONG_PARAMETER` (negative or non-finite weight), `ERROR_NO_1_TO_1_MAPPING` (the input UVs, when
 ///   used, have a flipped face), or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
 ///
-/// \sa \ref PkgCutParameterizationNamedParameters (types, defaults and valid
-///   values of the named parameters), \ref Chapter_Cut_parameterization
+/// \pre every face of `mesh` is a triangle (else `ERROR_NON_TRIANGULAR_MESH`)
+/// \pre with `initialize_from_uv_map(true)`, `uvmap` holds a finite UV for every vertex
+/// \post on `OK`, every UV is finite, every face has a UV triangle of positive
+///   signed area, and the energy is at most that of the initial map
+/// \post on error, `uvmap` is left unchanged
+///
+/// \sa `Symmetric_dirichlet_parameterizer_3`, \ref Chapter_Cut_parameterization
 template <typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code symmetric_dirichlet_parameterize(const TriangleMesh& mesh, VertexUVMap uvmap,

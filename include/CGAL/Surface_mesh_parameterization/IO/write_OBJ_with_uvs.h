@@ -43,12 +43,34 @@ namespace Surface_mesh_parameterization {
 /// \param os the output stream
 /// \param mesh the mesh
 /// \param uvmap the UV map
-/// \param np optional named parameters (CGAL's):
-///   - `vertex_point_map`: 3D positions; default `get(vertex_point, mesh)`
-///   - `vertex_index_map`: default the mesh's internal index, or a dynamic one
-///   - `stream_precision`: digits written; default `std::numeric_limits<double>::max_digits10`
+/// \tparam NamedParameters a sequence of named parameters
+/// \param np an optional sequence of %CGAL's named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions written in the `v` lines}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{only used to find a vertex's texture vertices; OBJ indices follow
+///       the order of `vertices(mesh)`}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or a dynamic one}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stream_precision}
+///     \cgalParamDescription{digits written for coordinates}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{`std::numeric_limits<double>::max_digits10`, which reads back exactly}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns `true` if the stream is still good after writing
+///
+/// \pre `uvmap` gives a UV to every corner of every face of `mesh` (to every vertex if keyed by vertices)
+/// \post the precision of `os` is restored; `mesh` and `uvmap` are unchanged
 template <typename TriangleMesh, typename HalfedgeUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 bool write_OBJ_with_uvs(std::ostream& os, const TriangleMesh& mesh, HalfedgeUVMap uvmap,
@@ -132,7 +154,40 @@ bool write_OBJ_with_uvs(std::ostream& os, const TriangleMesh& mesh, HalfedgeUVMa
 /// \ingroup PkgCutParameterizationRef
 ///
 /// Same as above, writing to the file `filename` (created or overwritten).
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (faces may have any degree)
+/// \tparam HalfedgeUVMap as above
+/// \tparam NamedParameters a sequence of named parameters
+/// \param filename the file written
+/// \param mesh the mesh
+/// \param uvmap the UV map
+/// \param np an optional sequence of %CGAL's named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions written in the `v` lines}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{only used to find a vertex's texture vertices; OBJ indices follow
+///       the order of `vertices(mesh)`}
+///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or a dynamic one}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stream_precision}
+///     \cgalParamDescription{digits written for coordinates}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{`std::numeric_limits<double>::max_digits10`, which reads back exactly}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \returns `false` if the file cannot be opened or written
+///
+/// \pre as above
+/// \post on `true`, the file holds the whole mesh
 template <typename TriangleMesh, typename HalfedgeUVMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 bool write_OBJ_with_uvs(const std::string& filename, const TriangleMesh& mesh, HalfedgeUVMap uvmap,
