@@ -111,26 +111,20 @@ CGAL_SMP_CUT_NAMED_PARAMETER(uv_scale_t, uv_scale)
 
 #undef CGAL_SMP_CUT_NAMED_PARAMETER
 
+/// \ingroup PkgCutParameterizationRef
 /// `bounding_box_stiffness` of the default box, a square: a gentle pull that
-/// rounds charts off at little cost in distortion. Measured on the 20
-/// benchmark meshes (unit-square coverage mean / min, E_d increase mean / max),
-/// without the distortion budget: no box 0.525 / 0.334; 3: 0.595 / 0.458,
-/// +0.014 / +0.045; 4: 0.603 / 0.462, +0.020 / +0.059; 5: 0.613 / 0.501,
-/// +0.025 / +0.071; 10: 0.637 / 0.530, +0.050 / +0.195. With the default
-/// budget (gentle_bounding_box_distortion_budget): 4: 0.601 / 0.462, +0.019 /
-/// +0.041; 5: 0.608 / 0.478, +0.022 / +0.044.
+/// rounds charts off at little cost in distortion (measured against 3, 4
+/// and 10 in the manual, \ref Cut_parameterization_atlas_box).
 constexpr double gentle_bounding_box_stiffness = 5.;
+/// \ingroup PkgCutParameterizationRef
 /// `bounding_box_stiffness` when `bounding_box_aspect_ratio` is given: the
-/// chart fills its box tightly. Measured with a square on the same meshes:
-/// coverage 0.768 / 0.630, E_d +0.23 / +0.67; 100 gave less coverage, 1000
-/// stalled on bimba.
+/// chart fills its box tightly (measured in the manual,
+/// \ref Cut_parameterization_atlas_box).
 constexpr double tight_bounding_box_stiffness = 300.;
+/// \ingroup PkgCutParameterizationRef
 /// `bounding_box_distortion_budget` of the default box: the largest E_d
-/// increase over the same final solve without box. Where the box costs more,
-/// its stiffness is multiplied by 0.7 and the solve redone from the boxed map,
-/// at most twice, then the box is dropped. On the 20 benchmark meshes the
-/// gentle box (stiffness 5) costs more on 4: venus, torus, lion_o_f10000 and
-/// bunnyhead.
+/// increase over the same final solve without box; where the box costs more,
+/// it is weakened, then dropped (\ref Cut_parameterization_atlas_box).
 constexpr double gentle_bounding_box_distortion_budget = 0.045;
 
 } // namespace Surface_mesh_parameterization

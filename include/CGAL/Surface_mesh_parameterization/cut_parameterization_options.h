@@ -74,11 +74,13 @@ struct Cut_parameterization_options
   std::function<bool(const Cut_and_parameterize_progress&)> progress_callback;
 
   /// Width / height of the box each chart is pulled into (0: no box).
+  /// \pre none (the value is checked by `cut_and_parameterize()`)
   /// \post the field if set, else 1
   double bounding_box_aspect_ratio_value() const { return bounding_box_aspect_ratio.value_or(1.); }
 
   /// The box's stiffness: as given, else tight (300) for a box asked for by
   /// its aspect ratio, else gentle (5) for the default square.
+  /// \pre none (the value is checked by `cut_and_parameterize()`)
   /// \post the field if set, else `tight_bounding_box_stiffness` or `gentle_bounding_box_stiffness`
   double bounding_box_stiffness_value() const
   {
@@ -89,6 +91,7 @@ struct Cut_parameterization_options
   /// The largest E_d increase the box may cost: as given, else none for a
   /// box the user asked for (aspect ratio or stiffness given), else the
   /// default box's budget (0.045).
+  /// \pre none (the value is checked by `cut_and_parameterize()`)
   /// \post the field if set, else +∞ or `gentle_bounding_box_distortion_budget`
   double bounding_box_distortion_budget_value() const
   {
@@ -106,6 +109,7 @@ namespace parameters {
 /// pack override its fields. This overload starts a pack.
 /// \tparam K `Cut_parameterization_options`
 /// \param k the options
+/// \pre none (the values are checked by the function the pack is passed to)
 /// \post the pack holds a copy of `k` (later changes to `k` do not reach it)
 template <typename K>
 CGAL::Named_function_parameters<K, internal_np::cut_parameterization_options_t>
@@ -120,6 +124,7 @@ cut_parameterization_options(const K& k)
 /// \tparam K `Cut_parameterization_options`
 /// \param k the options
 /// \param pack the named parameters it is added to
+/// \pre none (the values are checked by the function the pack is passed to)
 /// \post the pack holds a copy of `k` in front of `pack`
 template <typename K, typename T, typename Tag, typename Base>
 CGAL::Named_function_parameters<K, internal_np::cut_parameterization_options_t,
