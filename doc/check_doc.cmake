@@ -21,6 +21,8 @@ endforeach()
 
 set(_log "${OUTPUT_DIR}/doxygen_warnings.log")
 file(REMOVE "${_log}")
+# no stale page of an earlier run may pass the checks below
+file(REMOVE_RECURSE "${OUTPUT_DIR}/html")
 execute_process(COMMAND "${DOXYGEN}" "${DOXYFILE}"
                 WORKING_DIRECTORY "${OUTPUT_DIR}"
                 RESULT_VARIABLE _status)
