@@ -6,7 +6,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_BORDER_CROSSINGS_H
 #define CGAL_SMP_CUT_INTERNAL_BORDER_CROSSINGS_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>

@@ -22,8 +22,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/border_crossings.h>
 
 #include <algorithm>
 #include <array>

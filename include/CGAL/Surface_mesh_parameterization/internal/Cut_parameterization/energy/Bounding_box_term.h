@@ -12,8 +12,8 @@
 #define CGAL_SMP_CUT_INTERNAL_BOUNDING_BOX_TERM_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/border_crossings.h>
 
 #include <Eigen/Eigenvalues>
 

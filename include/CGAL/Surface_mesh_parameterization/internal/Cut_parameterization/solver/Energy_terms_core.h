@@ -6,8 +6,8 @@
 #define CGAL_SMP_CUT_INTERNAL_ENERGY_TERMS_CORE_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 #define CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
 #include <algorithm>
 #include <vector>

@@ -4,8 +4,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_TUTTE_EMBEDDING_H
 #define CGAL_SMP_CUT_INTERNAL_TUTTE_EMBEDDING_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
 #include <cmath>
 #include <unordered_map>

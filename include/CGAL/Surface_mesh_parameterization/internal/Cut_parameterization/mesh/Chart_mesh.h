@@ -4,7 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
 #define CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
 
 #include <Eigen/Dense>
 #include <array>

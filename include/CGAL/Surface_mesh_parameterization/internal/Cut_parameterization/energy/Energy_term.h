@@ -4,8 +4,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Hessian_assembler.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
 
 #include <limits>
 

@@ -3,11 +3,11 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 #define CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Proxy_quasi_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Distortion_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Proxy_quasi_newton_solver.h>
 
 #include <memory>
 

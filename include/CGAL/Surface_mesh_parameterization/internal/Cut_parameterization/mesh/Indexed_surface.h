@@ -8,7 +8,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_INDEXED_SURFACE_H
 #define CGAL_SMP_CUT_INTERNAL_INDEXED_SURFACE_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <boost/graph/graph_traits.hpp>

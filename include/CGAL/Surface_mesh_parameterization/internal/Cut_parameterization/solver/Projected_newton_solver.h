@@ -8,7 +8,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_terms_core.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Energy_terms_core.h>
 
 #include <algorithm>
 #include <cmath>
