@@ -11,9 +11,13 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
