@@ -9,7 +9,7 @@
 // converged map.
 #include "cut_result_checks.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
 #include <atomic>
 #include <cstdlib>

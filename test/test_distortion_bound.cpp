@@ -14,7 +14,7 @@
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 
 #include <atomic>
 #include <chrono>

@@ -10,13 +10,13 @@
 // terms' gradients are checked against finite differences.
 #include "cut_result_checks.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Bounding_box_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/carried_map.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Seam_closing_term.h>
 
 #include <limits>
 #include <map>

@@ -6,9 +6,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <cmath>
 #include <random>

@@ -6,7 +6,7 @@
 // user's seams, not depend on the thread count, and reject a negative size.
 #include "cut_result_checks.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 
 #include <algorithm>

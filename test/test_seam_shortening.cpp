@@ -10,11 +10,11 @@
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <algorithm>
 #include <array>

@@ -6,8 +6,8 @@
 // near-degenerate Jacobians, and first_collapse_time against a brute-force scan.
 #include "generators.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>

@@ -2,10 +2,10 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_METRICS_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/uv_coverage_raster.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/uv_coverage_raster.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>

@@ -4,8 +4,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_ATLAS_VALIDITY_H
 #define CGAL_SMP_CUT_INTERNAL_ATLAS_VALIDITY_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
 
 #include <unordered_set>
 #include <vector>

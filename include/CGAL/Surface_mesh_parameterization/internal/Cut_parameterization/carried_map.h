@@ -5,8 +5,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CARRIED_MAP_H
 #define CGAL_SMP_CUT_INTERNAL_CARRIED_MAP_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <cstddef>
 #include <limits>

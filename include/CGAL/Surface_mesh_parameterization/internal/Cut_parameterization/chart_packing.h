@@ -14,7 +14,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 
 #include <algorithm>
 #include <functional>

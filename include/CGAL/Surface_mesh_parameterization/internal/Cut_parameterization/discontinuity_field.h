@@ -8,8 +8,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_DISCONTINUITY_FIELD_H
 #define CGAL_SMP_CUT_INTERNAL_DISCONTINUITY_FIELD_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
 #include <vector>
 

@@ -21,7 +21,7 @@
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_BOUND_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
 
 #include <algorithm>

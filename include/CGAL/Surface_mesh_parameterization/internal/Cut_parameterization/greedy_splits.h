@@ -22,8 +22,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 
 #include <algorithm>
 #include <array>

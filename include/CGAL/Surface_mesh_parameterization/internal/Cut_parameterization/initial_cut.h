@@ -20,7 +20,7 @@
 #define CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
 
 #include <algorithm>

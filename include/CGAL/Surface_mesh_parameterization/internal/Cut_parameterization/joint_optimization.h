@@ -11,14 +11,14 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/discontinuity_field.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/overlap_partition.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Scoped_timer.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/Scoped_timer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <algorithm>
 #include <limits>

@@ -8,7 +8,7 @@
 #define CGAL_SMP_CUT_INTERNAL_MULTIRESOLUTION_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
 
 #include <CGAL/Simple_cartesian.h>

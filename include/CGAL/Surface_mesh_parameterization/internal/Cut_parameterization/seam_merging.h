@@ -25,11 +25,11 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Distortion_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Seam_closing_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Seam_closing_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
 
 #include <algorithm>

@@ -18,7 +18,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 #define CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>

@@ -13,8 +13,105 @@ namespace cut {
 namespace tuning {
 
 // ---- Linear algebra, energies and inner solvers (linalg/, mesh/, energy/, solver/)
+// Measurements: the manual's page "Design and measurements: energies and
+// inner solvers" (doc/design/solver.dox).
 
+// mesh/Chart_mesh.h
+/// Relative height (and first side) below which a face's rest shape is clamped as degenerate: no NaN from needles.
+constexpr double degenerate_ratio = 1e-4;
 
+// energy/symmetric_dirichlet.h, first_collapse_time()
+/// Leading coefficient below this fraction of the largest: the collapse equation is solved as linear.
+constexpr double collapse_linear_ratio = 1e-14;
+/// A discriminant down to minus this times b^2 is a double root: round-off must not hide a uniform shrink.
+constexpr double collapse_discriminant_slack = 1e-12;
+
+// linalg/Sparse_cholesky.h
+/// Unknowns from which METIS orders the simplicial factorization (if built with it): faster than AMD from 20k.
+constexpr std::ptrdiff_t metis_threshold = 30000;
+/// Unknowns from which CHOLMOD's supernodal factorization takes over (if built with it): faster from about 5k.
+constexpr std::ptrdiff_t cholmod_threshold = 8000;
+/// CHOLMOD's supernode relaxation (columns; fraction of zeros): merged more eagerly than its defaults (4, 16, 48;
+/// 0.8, 0.1, 0.05), its work around each supernode outweighing the extra zeros.
+constexpr std::size_t cholmod_nrelax[3] = {12, 32, 96};
+constexpr double cholmod_zrelax[3] = {0.8, 0.2, 0.1};
+
+// util/parallel_for.h
+/// Indices per TBB task of parallel_for(): per-face loops of a few hundred flops each.
+constexpr std::size_t parallel_grain = 512;
+
+// geometry/box_pairs.h
+/// A box spanning more grid cells than this is tested against every box: the cost stays at most quadratic.
+constexpr long box_grid_max_cells = 64;
+
+// geometry/segment_contacts.h
+/// Slack on the segment parameter of a contact: conservative near tangency (a point at the segment's end counts).
+constexpr double contact_parameter_slack = 1e-9;
+/// Leading coefficient below this fraction of the largest: the contact equation is solved as linear.
+constexpr double contact_linear_ratio = 1e-12;
+
+// energy/Border_barrier_term.h
+/// Barrier distance ε relative to the mean 3D border edge length.
+constexpr double barrier_relative_distance = 0.25;
+/// Energy of a pair at ε/2 relative to the mean face area.
+constexpr double barrier_relative_weight = 1.;
+/// A border segment shorter in UV than this fraction of ε's 3D length is squashed: its ε follows its UV length.
+constexpr double barrier_squashed = 0.1;
+/// Close pairs outside the pattern join it once they are this fraction of the declared pairs...
+constexpr double barrier_pattern_growth = 1. / 16.;
+/// ... or after this many Newton iterations: a new pattern per iteration was most of the time.
+constexpr int barrier_pattern_delay = 4;
+
+// energy/Bounding_box_term.h
+/// Fraction of its rectangle a chart is meant to fill: 1, so that it fits only by filling it.
+constexpr double box_target_fill = 1.;
+
+// solver/tutte_embedding.h
+/// Distance between the centres of neighbouring charts' circles, in radii: a gap of a fifth of a radius.
+constexpr double tutte_circle_spacing = 2.2;
+
+// solver/Energy_terms_core.h
+/// Newton_settings::max_iterations by default.
+constexpr int newton_max_iterations = 500;
+/// Newton_settings::tolerance by default: a decrease of the area-weighted mean distortion, scale-free.
+constexpr double newton_tolerance = 1e-9;
+/// Slow_tail::window by default: the steps over which the slow-tail rule measures the decrease.
+constexpr int slow_tail_window = 20;
+/// Slow_tail::ratio by default: a relative decrease over the window below which a minimization crawls.
+constexpr double slow_tail_ratio = 1e-3;
+/// Mean energy (Psi; E_d 24) above which reweighted proxy steps come first: far above any chart's minimum.
+constexpr double reweighted_start_energy = 10.;
+/// Distortion_minimizer's reweighted start: proxy steps while each leaves at most this fraction of the energy.
+constexpr double reweighted_start_ratio = 0.8;
+/// Distortion_minimizer's longest line-search step, in whole steps: longer steps cut projected Newton's slow tails.
+constexpr double step_growth = 64.;
+/// The fill-reducing ordering is kept while the Hessian's entries stay within 1/this of those it was computed for.
+constexpr std::ptrdiff_t ordering_kept_within = 50;
+/// Diagonal shift relative to the mean diagonal: removes the rigid-motion null space of the Hessian.
+constexpr double hessian_shift = 1e-9;
+/// Factorizations tried, the shift multiplied by hessian_shift_growth after each failure.
+constexpr int factorization_attempts = 6;
+constexpr double hessian_shift_growth = 100.;
+/// Armijo's sufficient-decrease constant of the line search.
+constexpr double armijo = 1e-4;
+/// Halvings of the step before the line search gives up.
+constexpr int line_search_halvings = 60;
+/// Fraction of the flip-free step bound the line search starts from (at the bound itself a face collapses).
+constexpr double step_bound_fraction = 0.9;
+
+// solver/Projected_newton_solver.h
+/// Conjugate-gradient iterations preconditioned by the last factorization before a new one is made.
+constexpr int reuse_iterations = 3;
+/// Their target residual relative to the gradient: an inexact Newton step, never used to decide convergence.
+constexpr double reuse_tolerance = 0.2;
+
+// solver/Proxy_quasi_newton_solver.h
+/// L-BFGS curvature pairs kept (16: the same counts within 3%).
+constexpr int lbfgs_memory = 8;
+/// The proxy is factorized again once a step gains less than this fraction of the first step after it.
+constexpr double refactorization_ratio = 0.1;
+/// A pair is kept only where s.y exceeds this times |s| |y|: the update stays positive definite.
+constexpr double lbfgs_curvature = 1e-10;
 
 // ---- end of the solver section
 

@@ -20,7 +20,9 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_PROXY_QUASI_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROXY_QUASI_NEWTON_SOLVER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_terms_core.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Energy_terms_core.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <cmath>
 #include <vector>
@@ -30,7 +32,7 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-class Proxy_quasi_newton_solver : public Energy_terms_core
+class Proxy_quasi_newton_solver : public Energy_terms_core<Sparse_cholesky>
 {
   // L-BFGS pairs since the last factorization: a ring of `memory` slots
   // whose vectors keep their storage from one pair to the next (no
@@ -43,16 +45,14 @@ class Proxy_quasi_newton_solver : public Energy_terms_core
 
 public:
   /// Curvature pairs kept.
-  /// (16: the same counts within 3% on bimba_i_f10000)
-  static constexpr int memory = 8;
+  static constexpr int memory = tuning::lbfgs_memory;
   /// The proxy is factorized again once a step decreases the energy by less
-  /// than this fraction of the first step after the last factorization.
-  /// Measured in the manual ("Inner solvers"): 1/50 and 1/200 gave fewer
-  /// factorizations and more iterations, no faster.
-  static constexpr double refactorization_ratio = 0.1;
+  /// than this fraction of the first step after the last factorization
+  /// (measured in the manual, "Inner solvers").
+  static constexpr double refactorization_ratio = tuning::refactorization_ratio;
 
   Proxy_quasi_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
-    : Energy_terms_core(terms, dimension)
+    : Energy_terms_core<Sparse_cholesky>(terms, dimension)
   {}
 
   /// Minimizes from an admissible x (finite energy); x stays admissible.
@@ -160,7 +160,7 @@ private:
     ds_ = x - previous_x;
     dy_ = g - previous_g;
     const double sy = ds_.dot(dy_);
-    if(!(sy > 1e-10 * ds_.norm() * dy_.norm())) return;
+    if(!(sy > tuning::lbfgs_curvature * ds_.norm() * dy_.norm())) return;
     const int k = pairs_ < memory ? slot(pairs_) : first_;
     s_[k].swap(ds_); // the scratch takes the slot's old storage
     y_[k].swap(dy_);

@@ -5,6 +5,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
 #define CGAL_SMP_CUT_INTERNAL_PARALLEL_FOR_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
+
 #include <cstddef>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -22,7 +24,7 @@ template <typename Function>
 void parallel_for(std::size_t n, const Function& function)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, tuning::parallel_grain),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for(std::size_t i = range.begin(); i != range.end(); ++i) function(i);
                     });

@@ -7,11 +7,13 @@
 // of the matrix is read; it may be stored whole, compressed or not.
 //
 // The fill-reducing ordering of the simplicial solvers is computed here, on
-// the graph of the UV vertices rather than of the unknowns (order()): a
-// scaffold changed the pattern at every Newton iteration, and Eigen's AMD
-// on all the unknowns cost more than the factorization itself.
+// the graph of the UV vertices rather than of the unknowns (order()): Eigen's
+// AMD on all the unknowns cost more than the factorization itself (see the
+// manual, Design and measurements).
 #ifndef CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
 #define CGAL_SMP_CUT_INTERNAL_SPARSE_CHOLESKY_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -37,19 +39,16 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>; // as in Hessian_assembler.h
 
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
 /// While alive, OpenMP parallel regions started by the calling thread run on
 /// that thread alone (no active level allowed); the setting before is
-/// restored after. Debian's CHOLMOD opens a parallel region with a fixed 4
-/// threads (CHOLMOD_OMP_NUM_THREADS, whatever OMP_NUM_THREADS says) for small
-/// loops inside each supernode: tens of thousands of regions per
-/// factorization, whose threads sleep and wake on futexes. On bimba_i_f10000
-/// refined to 160k faces (2 cores) that made 2.8 million context switches
-/// and a third of the run in the kernel: 95 s, against 63-67 s serial
-/// (OMP_THREAD_LIMIT=2: 70 s). The setting is an ICV of the calling thread
-/// (OpenMP 5), so other threads keep theirs.
+/// restored after. Debian's CHOLMOD opens a parallel region of a fixed 4
+/// threads for small loops inside each supernode, whose threads sleep and
+/// wake on futexes: slower than serial (see the manual, Design and
+/// measurements). The setting is an ICV of the calling thread (OpenMP 5), so
+/// other threads keep theirs.
 class Serial_openmp_scope
 {
   int saved_ = -1;
@@ -90,9 +89,8 @@ class Sparse_cholesky
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
   // CHOLMOD factorizes the lower triangle of P A P^T, permuted here: its own
   // ordering (with its postorder) is computed once per analysis, and the
-  // factorization is then told the matrix is in natural order. Given A
-  // itself, every factorization copied it twice (P A P^T, then its
-  // transpose: 7% of a 10k-face run).
+  // factorization is then told the matrix is in natural order (given A
+  // itself, every factorization copied it twice).
   Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> cholmod_;
   std::vector<int> cholmod_inverse_order_; // position in P A P^T of each unknown
   std::vector<int> cholmod_value_slot_;    // index in permuted_ of each stored value of A, -1 above the diagonal
@@ -244,69 +242,28 @@ class Sparse_cholesky
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_NATURAL;
     common.postorder = 0; // P is postordered already
-    // Supernodes merged more eagerly than CHOLMOD's defaults (4, 16, 48 columns;
-    // 0.8, 0.1, 0.05 zeros): CHOLMOD's per-supernode work around BLAS (an
-    // OpenMP region per small loop, even serial, is a futex call; timers;
-    // workspace clears) outweighs the extra zeros. bimba_i_f10000 (10k
-    // unknowns): 1441 -> about 800 supernodes. Whole runs (2 cores):
-    // bimba_i_f10000 2.81 -> 2.39 s, lion_o_f10000 5.47 -> 4.67 s, refined
-    // to 40k faces 6.86 -> 6.32 s, to 160k 18.7 -> 18.1 s; same Newton
-    // iterations, E_d and E_s. 16, 64, 256 or 32, 128, 512 columns were slower.
-    const std::size_t nrelax[3] = {12, 32, 96};
-    const double zrelax[3] = {0.8, 0.2, 0.1};
-    std::copy(nrelax, nrelax + 3, common.nrelax);
-    std::copy(zrelax, zrelax + 3, common.zrelax);
+    // supernodes merged more eagerly than CHOLMOD's defaults (tuning.h)
+    std::copy(tuning::cholmod_nrelax, tuning::cholmod_nrelax + 3, common.nrelax);
+    std::copy(tuning::cholmod_zrelax, tuning::cholmod_zrelax + 3, common.zrelax);
     cholmod_.analyzePattern(permuted_);
   }
 #endif
 
 public:
-  /// Unknowns from which METIS orders the system (if built with it). Factorization
-  /// of the distortion Hessian on bimba_i_f10000 and its midpoint subdivisions,
-  /// AMD-ordered LDLT vs METIS-ordered LLT (2 cores, one thread): 10k unknowns
-  /// 18 vs 18 ms, 20k 54 vs 42 ms, 40k 193 vs 93 ms, 160k 3.5 vs 1.3 s; the
-  /// ordering costs METIS 10-70% more. Built with CHOLMOD too, these
-  /// systems go to CHOLMOD (cholmod_threshold is lower).
-  static constexpr Eigen::Index metis_threshold = 30000;
+  /// Unknowns from which METIS orders the system (if built with it; built
+  /// with CHOLMOD too, these systems go to CHOLMOD).
+  static constexpr Eigen::Index metis_threshold = tuning::metis_threshold;
 
   /// Unknowns from which CHOLMOD's supernodal factorization takes over (if
-  /// built with it). A matrix of the Hessian's pattern on benchmark meshes and
-  /// on bimba_i_f10000 refined to 40k faces, one factorization, Eigen's
-  /// AMD-ordered simplicial LDLT vs CHOLMOD supernodal with OpenBLAS (one
-  /// thread, OpenMP regions kept serial, 2 cores): 700 unknowns 0.17 vs
-  /// 0.45 ms, 3.9k 2.5 vs 2.7 ms, 5k 3.9 vs 3.8 ms, 10k 14 vs 9.1 ms, 20k 40
-  /// vs 19 ms, 40k 166 vs 58 ms (METIS-ordered simplicial LLT: 93 ms); at
-  /// 160k 1.3 s (METIS) vs 0.88 s, at 640k 11.1 vs 3.7 s. The 15 benchmark
-  /// meshes: same E_d and E_s, geometric-mean speedup 2.20x -> 2.57x.
-  ///
-  /// Measured and left out: one level of nested dissection on two cores
-  /// (METIS vertex separator; each half its own CHOLMOD factor with the
-  /// separator last, c I in its block; the separator's Schur complement
-  /// from the halves' last blocks, dense). bimba_i_f10000, 10k unknowns, 118
-  /// in the separator: 4.7 ms per factorization against 5.6 ms (the halves
-  /// 3.3 and 3.1 ms one after the other, 3.9 and 3.7 ms at once; their work
-  /// 24 and 10 MFlop until the separator was moved by weights), but the
-  /// analyses (separator, two orderings) at every new pattern ate the gain:
-  /// on the 8 benchmark meshes of 8k-20k faces, end to end -5% to +8%.
-  static constexpr Eigen::Index cholmod_threshold = 8000;
+  /// built with it).
+  static constexpr Eigen::Index cholmod_threshold = tuning::cholmod_threshold;
 
   /// Symbolic analysis; call again only when the pattern changes.
-  /// `block_size`: see order(). Ordering the 2 unknowns of each UV vertex
-  /// together (block size 2) gives the same fill for a fraction of the time;
-  /// ordering + symbolic analysis of the distortion Hessian on bimba_i_f10000
-  /// and its midpoint subdivisions (2 cores, one thread), all unknowns vs
-  /// vertices: 10k unknowns 20 vs 8 ms (AMD), 20k 57 vs 16 ms, 40k 162 vs
-  /// 116 ms (METIS); factorizations within 1%.
-  ///
+  /// `block_size`: see order(); 2 orders the (u, v) of each UV vertex
+  /// together, the same fill for a fraction of the time.
   /// With `keep_ordering`, the fill-reducing ordering of the last analysis
-  /// (same size) is used again: only the symbolic analysis is redone. For
-  /// CHOLMOD too: on bimba_i_f10000 refined to 640k faces its ordering
-  /// (nested dissection at that size) took 2.7 s, a factorization 3.7 s, and
-  /// the border barrier's new patterns (a few pairs more or fewer) asked for
-  /// 13 orderings in the final solve, 35 s of a 110 s run; keeping them: 8
-  /// orderings fewer, 79 s, the same Newton iterations and E_d. (Giving
-  /// CHOLMOD a matrix ordered by METIS on the vertices instead, measured at
-  /// 160k faces before, gained nothing.)
+  /// (same size) is used again: only the symbolic analysis is redone (for
+  /// CHOLMOD too, whose ordering at 640k faces costs most of a factorization).
   void analyze(const Sparse_matrix& A, int block_size = 1, bool keep_ordering = false)
   {
     const bool keep = keep_ordering && analyzed_ && permuted_.rows() == A.rows();
@@ -336,13 +293,8 @@ public:
 
   /// True where a solve costs a small fraction of a factorization (the
   /// simplicial solvers), so that an old factorization pays as a
-  /// preconditioner; CHOLMOD's supernodal factorization is fast and its
-  /// solves are not (Projected_newton_solver::reuse_factor()). Measured
-  /// again with OpenBLAS's AVX-512 kernels (a CHOLMOD solve about 1/8 of a
-  /// factorization on bimba_i_f10000): with the reuse in CHOLMOD's range too,
-  /// more Newton iterations and longer seams (bimba_i_f10000 284 -> 365, E_s
-  /// 2.673 -> 3.007; max_planck_i_f8000 253 -> 292), time x1.03 over the 21
-  /// benchmark meshes.
+  /// preconditioner (Projected_newton_solver::reuse_factor()); not CHOLMOD's
+  /// supernodal solves (measured: see the manual, Design and measurements).
   bool solves_are_cheap() const { return method_ != Method::CHOLMOD; }
 
   /// Numeric factorization of a matrix with the analyzed pattern.

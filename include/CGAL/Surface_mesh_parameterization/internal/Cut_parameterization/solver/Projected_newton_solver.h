@@ -8,7 +8,9 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 #define CGAL_SMP_CUT_INTERNAL_PROJECTED_NEWTON_SOLVER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_terms_core.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Energy_terms_core.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +21,7 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-class Projected_newton_solver : public Energy_terms_core
+class Projected_newton_solver : public Energy_terms_core<Sparse_cholesky>
 {
   bool inexact_ = false;             // the last direction came from reuse_factor()
   Eigen::VectorXd cg_r_, cg_z_, cg_p_, cg_q_;
@@ -28,7 +30,7 @@ public:
   /// Registers the terms for `dimension` unknowns; the pattern is built by
   /// the first minimize(), once the terms have seen x.
   Projected_newton_solver(const std::vector<Energy_term*>& terms, int dimension)
-    : Energy_terms_core(terms, dimension)
+    : Energy_terms_core<Sparse_cholesky>(terms, dimension)
   {}
 
   /// Minimizes from an admissible x (finite energy); x stays admissible.
@@ -103,16 +105,11 @@ private:
   ///
   /// An inexact Newton step: within one minimization the Hessian changes
   /// little from one iteration to the next, and with the simplicial solvers
-  /// a solve costs a fraction of a factorization. Measured on the 20 meshes
-  /// of the benchmark (2 cores, with the box solved under the border barrier
-  /// at once, see final_solve()): factorizations of bunnyhead 275 -> 124;
-  /// geometric-mean speedup over the published code 3.36x -> 3.90x, every
-  /// target met as before, E_d within 0.02 (planck1 4.609 -> 4.631, hand_1_i_f5000
-  /// 4.149 -> 4.139). Tighter settings (1e-3 in 12 iterations) needed 6-12
-  /// iterations per step, as much as a factorization at 3k unknowns.
-  /// Convergence is never decided on an inexact direction (minimize()).
-  static constexpr int reuse_iterations = 3;
-  static constexpr double reuse_tolerance = 0.2;
+  /// a solve costs a fraction of a factorization (see the manual, Design and
+  /// measurements). Convergence is never decided on an inexact direction
+  /// (minimize()).
+  static constexpr int reuse_iterations = tuning::reuse_iterations;
+  static constexpr double reuse_tolerance = tuning::reuse_tolerance;
   bool reuse_factor(const Eigen::VectorXd& gradient, Eigen::VectorXd& direction)
   {
     const auto H = hessian_.matrix().template selfadjointView<Eigen::Lower>();

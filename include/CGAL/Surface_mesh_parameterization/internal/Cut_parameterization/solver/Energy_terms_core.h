@@ -1,13 +1,16 @@
 // What both inner solvers (Projected_newton_solver, Proxy_quasi_newton_solver)
 // share: the energy terms, the sparsity pattern of their Hessian and its
 // symbolic factorization, the assembly and factorization of the projected
-// Hessian, the flip-free step bound and the backtracking line search.
+// Hessian, the flip-free step bound and the backtracking line search; and
+// their settings and report. The sparse solver is a template parameter
+// (Sparse_cholesky for both), so that this header stays below it.
 #ifndef CGAL_SMP_CUT_INTERNAL_ENERGY_TERMS_CORE_H
 #define CGAL_SMP_CUT_INTERNAL_ENERGY_TERMS_CORE_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,65 +28,47 @@ using Surface_mesh_parameterization::Inner_solver;
 
 /// The slow-tail rule: a minimization that has taken `after` steps stops
 /// once its energy fell by less than `ratio` of itself over its last
-/// `window` steps (after = 0: never). On charts that no flat map fits
-/// (low-poly and mechanical parts, E_d above 6 before any split), projected
-/// Newton ends in a tail where the clamped twist curvature leaves it
-/// crawling like gradient descent: ArtDemo.obj's first u-step spent 400 of
-/// its 483 iterations lowering the energy by 1.3%. (Joint_settings::slow_tail
-/// sets it for the alternation's u-steps.)
+/// `window` steps (after = 0: never): on charts that no flat map fits,
+/// projected Newton ends crawling like gradient descent (see the manual,
+/// Design and measurements).
 struct Slow_tail
 {
   int after = 0;
-  int window = 20;
-  double ratio = 1e-3;
+  int window = tuning::slow_tail_window;
+  double ratio = tuning::slow_tail_ratio;
 };
 
 struct Newton_settings
 {
-  int max_iterations = 500;
+  int max_iterations = tuning::newton_max_iterations;
   /// Stop when the Newton decrement (predicted decrease) falls below
   /// tolerance * energy_scale. With energy_scale = sum_f w_f A_f this is a
   /// bound on the decrease of the area-weighted mean distortion, which does
   /// not depend on the mesh's scale.
-  double tolerance = 1e-9;
+  double tolerance = tuning::newton_tolerance;
   double energy_scale = 1.;
   Slow_tail slow_tail;
   /// The reweighted start (Energy_terms_core::reweighted_start()): while
   /// the mean energy (energy / energy_scale) is above
   /// `reweighted_start_energy`, steps on the terms' reweighted proxies come
   /// first, as long as each leaves at most `reweighted_start_ratio` of the
-  /// energy before it (0: no such step). The default mean energy, 10, is an
-  /// E_d of 24 (Psi = E_d / 2 - 2): far above the minimum of any chart that
-  /// deserves the name, so that a map near its minimum takes no such step.
+  /// energy before it (0: no such step). The default mean energy is far
+  /// above the minimum of any chart, so that a map near its minimum takes
+  /// no such step.
   double reweighted_start_ratio = 0.;
-  double reweighted_start_energy = 10.;
+  double reweighted_start_energy = tuning::reweighted_start_energy;
   /// The longest step the line search tries, in whole steps (1: none
   /// longer; Energy_terms_core::line_search()).
   double step_growth = 1.;
 };
 
 /// The reweighted start's ratio of Distortion_minimizer (minimize_distortion.h).
-/// Measured on the four solves from a Tutte map of ArtDemo.obj's final
-/// solve (the same inputs replayed; iterations without -> with it, 0.8 / 0.9
-/// / 0.95): 328 -> 200 / 223 / 223, 253 -> 232 / 238 / 293, 238 -> 199 /
-/// 239 / 211 (the same E_d within 0.003), and 189 -> 158 without the barrier.
-constexpr double default_reweighted_start_ratio = 0.8;
+constexpr double default_reweighted_start_ratio = tuning::reweighted_start_ratio;
 
-/// Newton_settings::step_growth of Distortion_minimizer (minimize_distortion.h).
-/// In a slow tail of projected Newton, the whole step passes the line search
-/// and still lowers the energy by a small fraction of what a step twice or
-/// four times as long does: the clamped twist curvature of compressed faces
-/// (symmetric_dirichlet_projected_hessian()) makes the model stiffer than
-/// the energy. Measured (2 cores) on a solve of ArtDemo with holes
-/// (wild_corpus.py) from a Tutte map, replayed: 148 -> 79 iterations without
-/// the border barrier, E_d 5.4260 -> 5.4255 (4, 16: 119, 79); 190 -> 173
-/// under it. On the 21 benchmark meshes, in the final solves and the split
-/// trials (not in the alternation's u-steps): the same E_s on all, E_d within
-/// +0.008 (cow_head 4.5162 -> 4.5244, coverage 0.553 -> 0.561), Newton
-/// iterations fewer on 19 (camel_simple 1020 -> 852, cow_head 340 -> 258).
-/// In the u-steps too, the cuts moved (planck1 E_d 4.5890 -> 4.5977, E_s
-/// 2.265 -> 2.468; venus E_s 2.815 -> 3.088; bimba 2.077 -> 2.059): see u_step().
-constexpr double default_step_growth = 64.;
+/// Newton_settings::step_growth of Distortion_minimizer (minimize_distortion.h):
+/// in a slow tail of projected Newton the clamped twist curvature makes the
+/// model stiffer than the energy, and longer steps gain more.
+constexpr double default_step_growth = tuning::step_growth;
 
 /// SLOW_TAIL: stopped by Newton_settings::slow_tail.
 enum class Newton_status { CONVERGED, MAX_ITERATIONS, STALLED, SLOW_TAIL, LINEAR_SOLVE_FAILED, NOT_FINITE };
@@ -136,12 +121,15 @@ public:
   }
 };
 
+/// `Linear_solver`: analyze(matrix, block_size, keep_ordering),
+/// factorize(matrix), solve(rhs, result), as Sparse_cholesky.
+template <typename Linear_solver>
 class Energy_terms_core
 {
 protected:
   std::vector<Energy_term*> terms_;
   Hessian_assembler hessian_;
-  Sparse_cholesky cholesky_;
+  Linear_solver cholesky_;
   int dimension_;
   bool pattern_built_ = false;
   Eigen::Index ordered_entries_ = 0; // entries of the pattern last ordered
@@ -149,20 +137,17 @@ protected:
 
   Energy_terms_core(const std::vector<Energy_term*>& terms, int dimension) : terms_(terms), dimension_(dimension) {}
 
-  /// The fill-reducing ordering is kept while the number of elements stays
-  /// within 2% of the pattern it was computed for: a few border barrier pairs
-  /// more or fewer barely change the fill, and the ordering is most of the
-  /// analysis (40k unknowns: 85 ms of METIS, for a 90 ms factorization; see
-  /// Sparse_cholesky::analyze() for 640k). It was kept only when elements
-  /// were added; a barrier that renews its pairs (most of the old ones gone)
-  /// keeps it too since: bimba_i_f10000 refined to 640k faces 87.7 -> 79.1 s.
+  /// The fill-reducing ordering is kept while the number of entries stays
+  /// within tuning::ordering_kept_within of the pattern it was computed for:
+  /// a few border barrier pairs more or fewer barely change the fill, and
+  /// the ordering is most of the analysis.
   void build_pattern()
   {
     hessian_.clear();
     for(Energy_term* term : terms_) term->declare_elements(hessian_);
     hessian_.finalize(dimension_);
     const Eigen::Index entries = hessian_.matrix().nonZeros();
-    const Eigen::Index slack = ordered_entries_ / 50;
+    const Eigen::Index slack = ordered_entries_ / tuning::ordering_kept_within;
     const bool keep = pattern_built_ && entries <= ordered_entries_ + slack && entries >= ordered_entries_ - slack;
     if(!keep) ordered_entries_ = entries;
     cholesky_.analyze(hessian_.matrix(), 2, keep); // unknowns (u, v) of each UV vertex ordered together
@@ -201,7 +186,7 @@ protected:
       else term->add_gradient_and_hessian(x, gradient, hessian_);
     }
     if(!gradient.allFinite()) return false;
-    shift = 1e-9 * (std::max)(hessian_.mean_diagonal(), 1e-300);
+    shift = tuning::hessian_shift * (std::max)(hessian_.mean_diagonal(), 1e-300);
     hessian_.add_to_diagonal(shift);
     return true;
   }
@@ -215,18 +200,19 @@ protected:
   }
 
   /// Factorizes the assembled Hessian and solves H d = rhs; the shift
-  /// grows (x100, up to 5 times) while the factorization fails. Adds the
-  /// factorizations to `factorizations`.
+  /// grows (tuning::hessian_shift_growth, up to tuning::factorization_attempts
+  /// tries) while the factorization fails. Adds the factorizations to
+  /// `factorizations`.
   bool factorize_and_solve(double shift, const Eigen::VectorXd& rhs, Eigen::VectorXd& direction, int& factorizations)
   {
     have_factor_ = false;
-    for(int attempt = 0; attempt < 6; ++attempt)
+    for(int attempt = 0; attempt < tuning::factorization_attempts; ++attempt)
     {
       ++factorizations;
       if(cholesky_.factorize(hessian_.matrix()) && solve(rhs, direction))
         return have_factor_ = true;
-      hessian_.add_to_diagonal(99. * shift);
-      shift *= 100.;
+      hessian_.add_to_diagonal((tuning::hessian_shift_growth - 1.) * shift);
+      shift *= tuning::hessian_shift_growth;
     }
     return false;
   }
@@ -256,10 +242,7 @@ protected:
   ///
   /// From a Tutte map, projected Newton grows a crushed face by 4/3 per
   /// iteration (the Newton step on s^-2); the proxy's step aims every face at
-  /// its closest rotation at once. Measured on femur.off refined to 125k
-  /// faces (2 cores), the final solve from Tutte under the border barrier:
-  /// 133 Newton iterations, 43.6 s; 24 proxy steps (E_d 1.9e15 -> 11.1),
-  /// then 40 Newton iterations, 18.4 s, E_d 4.6059 -> 4.6053.
+  /// its closest rotation at once (see the manual, Design and measurements).
   bool reweighted_start(UV_vector& x, const Newton_settings& settings, Newton_report& report)
   {
     if(!(settings.reweighted_start_ratio > 0.)) return true;
@@ -280,19 +263,19 @@ protected:
     return true;
   }
 
-  /// Flip-free backtracking (Armijo) from the whole step, or 0.9 of the
-  /// step bound where that is shorter; updates x and energy. False if no
-  /// decrease was found. Where that first trial passes, steps 2, 4, ...
-  /// times as long follow, at most `growth` whole steps and 0.9 of the step
-  /// bound, while each lowers the energy further; the last of them is kept
-  /// (Newton_settings::step_growth).
+  /// Flip-free backtracking (Armijo) from the whole step, or
+  /// tuning::step_bound_fraction of the step bound where that is shorter;
+  /// updates x and energy. False if no decrease was found. Where that first
+  /// trial passes, steps 2, 4, ... times as long follow, at most `growth`
+  /// whole steps and that fraction of the step bound, while each lowers the
+  /// energy further; the last of them is kept (Newton_settings::step_growth).
   bool line_search(UV_vector& x, const Eigen::VectorXd& direction, double slope, double& current,
                    double growth = 1.)
   {
-    const double bound = 0.9 * max_step(x, direction);
+    const double bound = tuning::step_bound_fraction * max_step(x, direction);
     double t = (std::min)(1., bound);
-    const double armijo = 1e-4;
-    for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5)
+    const double armijo = tuning::armijo;
+    for(int k = 0; k < tuning::line_search_halvings && t > 0.; ++k, t *= 0.5)
     {
       trial_ = x + t * direction; // (trial_ keeps its size: allocated once per solver)
       double e = energy(trial_);

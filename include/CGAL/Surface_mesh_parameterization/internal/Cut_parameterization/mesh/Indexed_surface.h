@@ -8,12 +8,16 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_INDEXED_SURFACE_H
 #define CGAL_SMP_CUT_INTERNAL_INDEXED_SURFACE_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>

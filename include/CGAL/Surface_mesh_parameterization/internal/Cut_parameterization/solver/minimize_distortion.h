@@ -3,13 +3,16 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 #define CGAL_SMP_CUT_INTERNAL_MINIMIZE_DISTORTION_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Distortion_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Projected_newton_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Proxy_quasi_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Bounding_box_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Distortion_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Projected_newton_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Proxy_quasi_newton_solver.h>
 
 #include <memory>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -81,7 +84,7 @@ public:
   }
 };
 
-/// E_d of METHOD.md on the chart mesh: area-weighted mean of s1²+s2²+s1⁻²+s2⁻².
+/// E_d (the manual, "The Ambrosio–Tortorelli energy") on the chart mesh: area-weighted mean of s1²+s2²+s1⁻²+s2⁻².
 inline double mean_distortion(const Chart_mesh& mesh, const UV_vector& x)
 {
   double sum = 0., area = 0.;

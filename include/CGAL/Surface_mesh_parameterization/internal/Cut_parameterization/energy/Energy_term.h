@@ -4,8 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_ENERGY_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Hessian_assembler.h>
+#include <Eigen/Core>
 
 #include <limits>
 
@@ -13,6 +12,10 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
+
+using UV_vector = Eigen::VectorXd; // (u0, v0, u1, v1, ...), as in mesh/Chart_mesh.h
+
+class Hessian_assembler; // linalg/Hessian_assembler.h, which the terms include
 
 class Energy_term
 {

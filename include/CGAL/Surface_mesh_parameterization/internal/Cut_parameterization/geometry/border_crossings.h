@@ -6,8 +6,6 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_BORDER_CROSSINGS_H
 #define CGAL_SMP_CUT_INTERNAL_BORDER_CROSSINGS_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -18,10 +16,15 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
+
+using Vector2 = Eigen::Vector2d;   // as in mesh/Chart_mesh.h
+using UV_vector = Eigen::VectorXd; // (u0, v0, u1, v1, ...)
 
 /// True if the open segments pq and rs cross at a single interior point
 /// (exact orientation predicates; touching and collinear overlap do not count).

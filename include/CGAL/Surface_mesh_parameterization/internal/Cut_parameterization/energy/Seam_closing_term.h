@@ -6,7 +6,8 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_CLOSING_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_SEAM_CLOSING_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
 
 #include <Eigen/Core>
 

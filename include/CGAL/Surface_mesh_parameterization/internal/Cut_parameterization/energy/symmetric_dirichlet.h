@@ -5,7 +5,10 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_SYMMETRIC_DIRICHLET_H
 #define CGAL_SMP_CUT_INTERNAL_SYMMETRIC_DIRICHLET_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
+
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -92,16 +95,14 @@ inline Vector4 symmetric_dirichlet_gradient(const Matrix2& J)
 /// Hessian of Psi w.r.t. vec(J), with negative eigenvalues clamped to zero.
 /// Precondition: det J > 0.
 ///
-/// Only the twist's eigenvalue can be negative. Its absolute value instead
-/// (as in trust-region eigenvalue filtering), measured on the 21 benchmark
-/// meshes: more Newton iterations (bimba_i_f10000 284 -> 432, lion_o_f10000
-/// 612 -> 866, hand1 415 -> 603), time x1.17, and the cuts moved.
+/// Only the twist's eigenvalue can be negative; it is clamped (its absolute
+/// value instead took more Newton iterations: see the manual, Design and
+/// measurements).
 ///
 /// Its eigenvectors are vec(U M V^T) for M = diag(1, 0), diag(0, 1), the
 /// twist [0 -1; 1 0] / sqrt 2 and the flip [0 1; 1 0] / sqrt 2, written out
-/// from Signed_svd_2's cosines and sines (no atan2, sin, cos or pow: 4x
-/// faster than through U and V, the same matrix within 1e-11; a tenth of a
-/// 10k-face run was spent in those calls).
+/// from Signed_svd_2's cosines and sines (no atan2, sin, cos or pow: several
+/// times faster than through U and V).
 inline Matrix4 symmetric_dirichlet_projected_hessian(const Matrix2& J)
 {
   const Signed_svd_2 svd(J);
@@ -177,14 +178,14 @@ inline double first_collapse_time(const Matrix2& Ds, const Matrix2& dDs)
   const double inf = std::numeric_limits<double>::infinity();
   const double scale = (std::max)({std::abs(a), std::abs(b), std::abs(c)});
   if(scale == 0.) return inf;
-  if(std::abs(a) <= 1e-14 * scale) // linear
+  if(std::abs(a) <= tuning::collapse_linear_ratio * scale) // linear
     return (b < 0.) ? -c / b : inf;
   double disc = b * b - 4. * a * c;
   // a uniform shrink to a point has a double root: round-off can make the
   // discriminant slightly negative, which must not hide that collapse
   if(disc < 0.)
   {
-    if(disc < -1e-12 * b * b) return inf;
+    if(disc < -tuning::collapse_discriminant_slack * b * b) return inf;
     disc = 0.;
   }
   // numerically stable roots

@@ -3,11 +3,14 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_DISTORTION_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_DISTORTION_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/parallel_for.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace CGAL {

@@ -4,7 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 #define CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <Eigen/Sparse>
 
 #include <algorithm>
 #include <vector>
@@ -13,6 +13,8 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
+
+using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>; // as in Sparse_cholesky.h
 
 class Hessian_assembler
 {
@@ -44,7 +46,7 @@ public:
     std::size_t count = std::size_t(dimension);
     for(const auto& dofs : element_dofs_) count += dofs.size() * (dofs.size() + 1) / 2;
     std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(count); // at 160k faces, 60 MB: grown by doubling, a large part of a new pattern's time
+    entries.reserve(count); // grown by doubling, a large part of a new pattern's time at 160k faces
     for(int d = 0; d < dimension; ++d) entries.emplace_back(d, d, 0.);
     for(const auto& dofs : element_dofs_)
       for(int a : dofs)

@@ -12,8 +12,10 @@
 #define CGAL_SMP_CUT_INTERNAL_BOUNDING_BOX_TERM_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -43,10 +45,6 @@ class Bounding_box_term : public Energy_term
   bool placed_ = false;
 
 public:
-  /// Fraction of the rectangle the chart is meant to fill: 1, the rectangle
-  /// has the chart's 3D area, so that the chart can only fit by filling it.
-  static constexpr double target_fill = 1.;
-
   /// `aspect_ratio`: width / height of every chart's rectangle (> 0);
   /// `stiffness`: weight of the mean squared distance outside (> 0).
   Bounding_box_term(const Chart_mesh& mesh, double aspect_ratio, double stiffness = tight_bounding_box_stiffness)
@@ -73,7 +71,7 @@ public:
     boxes_.resize(charts);
     for(int c = 0; c < charts; ++c)
     {
-      const double height = std::sqrt(area[c] / (target_fill * aspect_ratio));
+      const double height = std::sqrt(area[c] / (tuning::box_target_fill * aspect_ratio));
       boxes_[c].half_size = 0.5 * Vector2(aspect_ratio * height, height);
       boxes_[c].weight = count[c] > 0 ? stiffness / count[c] : 0.;
     }

@@ -4,10 +4,13 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_TUTTE_EMBEDDING_H
 #define CGAL_SMP_CUT_INTERNAL_TUTTE_EMBEDDING_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
+
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <cmath>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -155,7 +158,7 @@ inline Embedding_status disk_charts_embedding(const Chart_mesh& mesh, UV_vector&
     if(loops_per_chart[c] != 1 || pinned[c].vertices.size() < 3) return Embedding_status::NOT_DISKS;
     pinned[c].radius = std::sqrt(chart_area[c] / M_PI);
     pinned[c].center = Vector2(left + pinned[c].radius, 0.);
-    left += 2.2 * pinned[c].radius;
+    left += tuning::tutte_circle_spacing * pinned[c].radius;
   }
   for(Boundary_spacing spacing : {Boundary_spacing::ARC_LENGTH, Boundary_spacing::UNIFORM})
   {

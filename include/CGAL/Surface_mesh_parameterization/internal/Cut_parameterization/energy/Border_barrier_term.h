@@ -22,8 +22,13 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
 #define CGAL_SMP_CUT_INTERNAL_BORDER_BARRIER_TERM_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Energy_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Energy_term.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/border_crossings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/box_pairs.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/segment_contacts.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <algorithm>
 #include <array>
@@ -39,164 +44,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-/// Distance from p to the segment ab; `s` is the parameter of the closest
-/// point a + s (b - a), `n` the unit vector from it to p (zero if d = 0).
-/// The gradient of the distance is n for p, -(1-s) n for a and -s n for b.
-inline double point_segment_distance(const Vector2& p, const Vector2& a, const Vector2& b, double& s, Vector2& n)
-{
-  const Vector2 e = b - a;
-  const double length2 = e.squaredNorm();
-  s = length2 > 0. ? (std::min)(1., (std::max)(0., (p - a).dot(e) / length2)) : 0.;
-  const Vector2 r = p - (a + s * e);
-  const double d = r.norm();
-  n = d > 0. ? Vector2(r / d) : Vector2(0., 0.);
-  return d;
-}
-
-/// First t in [0, 1] at which p + t dp lies on the segment from a + t da to
-/// b + t db; +infinity if none. Conservative near tangency: a root whose
-/// point is within a relative 1e-9 of the segment's ends counts.
-inline double first_contact_time(const Vector2& p, const Vector2& dp, const Vector2& a, const Vector2& da,
-                                 const Vector2& b, const Vector2& db)
-{
-  auto cross = [](const Vector2& u, const Vector2& v) { return u.x() * v.y() - u.y() * v.x(); };
-  const Vector2 e = b - a, de = db - da, q = p - a, dq = dp - da;
-  // f(t) = cross(e + t de, q + t dq) = c0 + c1 t + c2 t^2: p on the segment's line
-  const double c0 = cross(e, q), c1 = cross(e, dq) + cross(de, q), c2 = cross(de, dq);
-  double roots[2];
-  int n = 0;
-  const double scale = (std::max)({std::abs(c0), std::abs(c1), std::abs(c2)});
-  if(!(scale > 0.)) // on the segment's line all along: a contact if on the segment at either end
-  {
-    auto on_segment = [&](double t) {
-      const Vector2 et = e + t * de, qt = q + t * dq;
-      const double length2 = et.squaredNorm();
-      const double s = length2 > 0. ? qt.dot(et) / length2 : 0.;
-      return s >= -1e-9 && s <= 1. + 1e-9;
-    };
-    return on_segment(0.) || on_segment(1.) ? 0. : std::numeric_limits<double>::infinity();
-  }
-  if(std::abs(c2) <= 1e-12 * scale)
-  {
-    if(c1 != 0.) roots[n++] = -c0 / c1;
-  }
-  else
-  {
-    const double disc = c1 * c1 - 4. * c2 * c0;
-    if(disc >= 0.)
-    {
-      // stable roots: q = -(c1 + sign(c1) sqrt(disc)) / 2, t = q / c2 and c0 / q
-      const double root = std::sqrt(disc);
-      const double qq = -0.5 * (c1 + (c1 >= 0. ? root : -root));
-      if(c2 != 0.) roots[n++] = qq / c2;
-      if(qq != 0.) roots[n++] = c0 / qq;
-    }
-  }
-  std::sort(roots, roots + n);
-  for(int k = 0; k < n; ++k)
-  {
-    const double t = roots[k];
-    if(!(t >= 0. && t <= 1.)) continue;
-    const Vector2 et = e + t * de, qt = q + t * dq;
-    const double length2 = et.squaredNorm();
-    const double s = length2 > 0. ? qt.dot(et) / length2 : 0.;
-    if(s >= -1e-9 && s <= 1. + 1e-9) return t;
-  }
-  return std::numeric_limits<double>::infinity();
-}
-
-/// Calls f(i, j) once for each pair of a box of `first` and a box of
-/// `second` that overlap (boxes as {x0, y0, x1, y1}; an empty box, with
-/// x0 > x1, meets nothing), in an order that depends on the boxes only.
-/// Small boxes are matched on a uniform grid, about one cell per box of
-/// `second`; a box spanning more than 64 cells (a long swept box) is tested
-/// against every box of the other set instead, so that the cost stays at
-/// most quadratic.
-template <typename F>
-void for_each_overlapping_box_pair(const std::vector<std::array<double, 4>>& first,
-                                   const std::vector<std::array<double, 4>>& second, F&& f)
-{
-  auto empty = [](const std::array<double, 4>& b) { return !(b[0] <= b[2] && b[1] <= b[3]); };
-  auto overlap = [](const std::array<double, 4>& a, const std::array<double, 4>& b) {
-    return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
-  };
-  const double inf = std::numeric_limits<double>::infinity();
-  double low[2] = {inf, inf}, high[2] = {-inf, -inf};
-  for(const auto* set : {&first, &second})
-    for(const auto& b : *set)
-      if(!empty(b))
-      {
-        low[0] = (std::min)(low[0], b[0]);
-        low[1] = (std::min)(low[1], b[1]);
-        high[0] = (std::max)(high[0], b[2]);
-        high[1] = (std::max)(high[1], b[3]);
-      }
-  if(!(low[0] <= high[0] && low[1] <= high[1])) return;
-  const int cells = (std::max)(1, int(std::ceil(std::sqrt(double(second.size())))));
-  const double size[2] = {(std::max)(high[0] - low[0], 1e-300), (std::max)(high[1] - low[1], 1e-300)};
-  auto cell_of = [&](double value, int axis) {
-    const int c = int((value - low[axis]) / size[axis] * cells);
-    return (std::min)((std::max)(c, 0), cells - 1);
-  };
-  constexpr long max_cells = 64;
-  // cell range {x0, y0, x1, y1}; empty for an empty or a large box
-  auto range = [&](const std::array<double, 4>& b, bool& large) {
-    large = false;
-    if(empty(b)) return std::array<int, 4>{1, 1, 0, 0};
-    const std::array<int, 4> r{cell_of(b[0], 0), cell_of(b[1], 1), cell_of(b[2], 0), cell_of(b[3], 1)};
-    large = long(r[2] - r[0] + 1) * long(r[3] - r[1] + 1) > max_cells;
-    return large ? std::array<int, 4>{1, 1, 0, 0} : r;
-  };
-  std::vector<std::array<int, 4>> second_range(second.size());
-  std::vector<int> large_second;
-  std::vector<int> count(std::size_t(cells) * cells + 1, 0);
-  for(std::size_t j = 0; j < second.size(); ++j)
-  {
-    bool large;
-    second_range[j] = range(second[j], large);
-    if(large) large_second.push_back(int(j));
-    const auto& r = second_range[j];
-    for(int cy = r[1]; cy <= r[3]; ++cy)
-      for(int cx = r[0]; cx <= r[2]; ++cx) ++count[std::size_t(cy) * cells + cx + 1];
-  }
-  for(std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
-  std::vector<int> bucket(count.back()), fill(count.begin(), count.end() - 1);
-  for(std::size_t j = 0; j < second.size(); ++j)
-  {
-    const auto& r = second_range[j];
-    for(int cy = r[1]; cy <= r[3]; ++cy)
-      for(int cx = r[0]; cx <= r[2]; ++cx) bucket[fill[std::size_t(cy) * cells + cx]++] = int(j);
-  }
-  for(std::size_t i = 0; i < first.size(); ++i)
-  {
-    const auto& a = first[i];
-    bool large;
-    const std::array<int, 4> r = range(a, large);
-    if(large)
-    {
-      for(std::size_t j = 0; j < second.size(); ++j)
-        if(overlap(a, second[j])) f(int(i), int(j));
-      continue;
-    }
-    for(int cy = r[1]; cy <= r[3]; ++cy)
-      for(int cx = r[0]; cx <= r[2]; ++cx)
-      {
-        const std::size_t c = std::size_t(cy) * cells + cx;
-        for(int k = count[c]; k < count[c + 1]; ++k)
-        {
-          const int j = bucket[k];
-          const auto& rj = second_range[j];
-          // each pair once: in the first cell both ranges share
-          if((std::max)(r[0], rj[0]) != cx || (std::max)(r[1], rj[1]) != cy) continue;
-          if(overlap(a, second[j])) f(int(i), j);
-        }
-      }
-    if(!empty(a))
-      for(int j : large_second)
-        if(overlap(a, second[j])) f(int(i), j);
-  }
-}
-
 class Border_barrier_term : public Energy_term
 {
   std::vector<std::array<int, 2>> segments_; // UV border, per chart
@@ -206,7 +53,7 @@ class Border_barrier_term : public Energy_term
   // per segment: the third vertex of its face, which reaches the segment
   // only by flipping that face (the distortion term's step bound rules it
   // out): no pair, or a thin border triangle (a fin, a sliver chart) would
-  // be held fat by the barrier (a 19-face book of slivers: E_d 10.7 -> 4.0)
+  // be held fat by the barrier
   std::vector<int> segment_apex_;
   std::vector<int> point_of_;                // per UV vertex: its index in points_, or -1
   int number_of_charts_ = 0;
@@ -223,12 +70,12 @@ class Border_barrier_term : public Energy_term
 
   /// A segment shorter in UV than this fraction of the mean 3D border
   /// length (squashed by the map) has an ε in proportion to its UV length.
-  static constexpr double squashed = 0.1;
+  static constexpr double squashed = tuning::barrier_squashed;
   /// Close pairs not in the pattern (their Hessian is approximated by its
   /// diagonal blocks) are added to it once they are this fraction of the
   /// declared ones, or after this many Newton iterations.
-  static constexpr double pattern_growth = 1. / 16.;
-  static constexpr int pattern_delay = 4;
+  static constexpr double pattern_growth = tuning::barrier_pattern_growth;
+  static constexpr int pattern_delay = tuning::barrier_pattern_delay;
 
   Vector2 point(const UV_vector& x, int v) const { return Vector2(x[2*v], x[2*v+1]); }
 
@@ -294,7 +141,8 @@ public:
   /// edges (lowered where the map squashes the border, see update());
   /// `relative_weight`: energy of a pair at ε/2 relative to the mean
   /// face area of the chart mesh.
-  explicit Border_barrier_term(const Chart_mesh& mesh, double relative_distance = 0.25, double relative_weight = 1.)
+  explicit Border_barrier_term(const Chart_mesh& mesh, double relative_distance = tuning::barrier_relative_distance,
+                               double relative_weight = tuning::barrier_relative_weight)
   {
     // border edges with their 3D length
     std::unordered_map<std::uint64_t, int> directed;
@@ -343,8 +191,8 @@ public:
   /// its segments as the barrier measures it (distance 0 in floating point:
   /// an infinite energy). The second happens where the predicates see no
   /// contact: the two sides of a slit of zero width whose vertices differ
-  /// in their last bits (CGAL's boeing.off after the alternation: its map
-  /// started the barrier's solve at an infinite energy, and the run failed).
+  /// in their last bits (met on CGAL's boeing.off: the barrier's solve
+  /// started at an infinite energy).
   std::vector<char> charts_with_crossing(const UV_vector& x) const
   {
     std::vector<char> crossing(number_of_charts_, 0);
@@ -374,9 +222,9 @@ public:
   ///
   /// Pairs closer than ε that are not in the pattern count on their own
   /// diagonal blocks only (still a descent direction) until they are many
-  /// enough, or have waited long enough, to be worth a new pattern
-  /// (measured on CGAL's cheese.off, whose holes give thousands of pairs:
-  /// a pattern per Newton iteration was most of the time). A new pattern
+  /// enough, or have waited long enough, to be worth a new pattern (a
+  /// pattern per Newton iteration was most of the time where holes give
+  /// thousands of pairs; see the manual, Design and measurements). A new pattern
   /// adds the pairs now closer than 2ε to those declared (MORE_ELEMENTS: the
   /// solver may keep its ordering), or declares only them (ELEMENTS) when
   /// most of the declared ones have gone away.

@@ -4,7 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
 #define CGAL_SMP_CUT_INTERNAL_CHART_MESH_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/symmetric_dirichlet.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <Eigen/Dense>
 #include <array>
@@ -18,17 +18,16 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
+// (the same aliases as in energy/, geometry/: each header stays on the lowest floor)
 using Vector3 = Eigen::Vector3d;
 using Vector2 = Eigen::Vector2d;
+using Matrix2 = Eigen::Matrix2d;
 using UV_vector = Eigen::VectorXd; // (u0, v0, u1, v1, ...)
-
-/// Relative height below which a face counts as degenerate (see rest_shape()).
-constexpr double degenerate_ratio = 1e-4;
 
 /// Rest shape of a triangle as the 2D edge matrix [[l01, x], [0, y]],
 /// rebuilt from its 3D corners. A degenerate triangle (zero area, a needle,
 /// coincident corners) gets its height and first side clamped to
-/// `degenerate_ratio` times its longest side (or `fallback_length` if all
+/// `tuning::degenerate_ratio` times its longest side (or `fallback_length` if all
 /// corners coincide), so no NaN or infinity can come out of it. Returns true
 /// iff the triangle was clamped.
 inline bool rest_shape(const Vector3& p0, const Vector3& p1, const Vector3& p2, double fallback_length,
@@ -37,7 +36,7 @@ inline bool rest_shape(const Vector3& p0, const Vector3& p1, const Vector3& p2, 
   double l01 = (p1 - p0).norm(), l02 = (p2 - p0).norm(), l12 = (p2 - p1).norm();
   const double lmax = (std::max)({l01, l02, l12});
   const double scale = (lmax > 0. && std::isfinite(lmax)) ? lmax : fallback_length;
-  const double floor = degenerate_ratio * scale;
+  const double floor = tuning::degenerate_ratio * scale;
   bool clamped = !(lmax > 0.) || !std::isfinite(lmax);
   if(clamped) l01 = l02 = l12 = scale;
   if(l01 < floor) { l01 = floor; clamped = true; }
