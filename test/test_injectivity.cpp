@@ -12,7 +12,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Bounding_box_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/carried_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/carried_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tutte_embedding.h>
