@@ -58,9 +58,17 @@ inline bool nearly_equal(double a, double b, double rel = 1e-6)
 }
 
 /// The library's defaults, whose values the options replace.
-inline const SMP::internal::cut::Joint_settings& library_defaults()
+struct Library_defaults
 {
-  static const SMP::internal::cut::Joint_settings defaults;
+  double lambda, distortion_bound, bounding_box_aspect_ratio, bounding_box_stiffness, bounding_box_distortion_budget;
+  int passes, multiresolution_faces;
+};
+inline const Library_defaults& library_defaults()
+{
+  static const SMP::Cut_parameterization_options o;
+  static const Library_defaults defaults{o.lambda, o.distortion_bound, o.bounding_box_aspect_ratio_value(),
+                                         o.bounding_box_stiffness_value(), o.bounding_box_distortion_budget_value(),
+                                         o.number_of_passes, o.multiresolution_faces};
   return defaults;
 }
 

@@ -172,7 +172,7 @@ std::string measure_run(const Scaling_mesh& m, const Options& opt)
     out.faces = mesh.number_of_faces();
     auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:benchmark_seam", false).first;
     auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:benchmark_uv").first;
-    const SMP::internal::cut::Joint_settings defaults;
+    const SMP::Cut_parameterization_options defaults;
     const SMP::Cut_and_parameterize_result r = SMP::cut_and_parameterize(
       mesh, seam, uv,
       SMP::parameters::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces)));

@@ -1,6 +1,6 @@
 // Build speed of the project's own programs (tests, examples, tools,
 // benchmark), not part of the library: the core of cut_and_parameterize()
-// (internal::cut::joint_optimization(), which depends on the mesh type only,
+// (internal::cut::run_plan(), which depends on the mesh type only,
 // not on the property maps or named parameters) is compiled once per common
 // mesh type, in cmake/shared_instances/*.cpp, instead of in every program
 // that calls it. Included by cmake/precompiled_headers.h; a program copied
@@ -24,19 +24,17 @@
 // The instance of one mesh type, declared here and defined (without
 // `extern`) in cmake/shared_instances/ (a file per mesh type: they compile
 // side by side), which must follow CUT_PARAM_FOR_EACH_SHARED_MESH.
-// Both paths of cut_and_parameterize() (with and without a distortion
-// bound) and its Debug postcondition: left out, bounded_joint_optimization()
-// pulled the whole method into every program again (measured on 2 cores:
-// unwrap_surface_mesh.cpp 45 s to compile in Release).
+// The plan (both paths of cut_and_parameterize(): with and without a
+// distortion bound) and its Debug postcondition: left out, the bound search
+// pulled the whole method into every program again (unwrap_surface_mesh.cpp
+// took 45 s to compile in Release on 2 cores).
 #define CUT_PARAM_SHARED_INSTANCE(KEYWORD, ...)                                                         \
   namespace CGAL { namespace Surface_mesh_parameterization { namespace internal { namespace cut {       \
-  KEYWORD template Error_code joint_optimization<Indexed_surface<__VA_ARGS__>>(                         \
-    const Indexed_surface<__VA_ARGS__>&, const std::vector<double>&, const Joint_settings&, Joint_state&); \
-  KEYWORD template Error_code bounded_joint_optimization<Indexed_surface<__VA_ARGS__>>(                 \
-    const Indexed_surface<__VA_ARGS__>&, const std::vector<double>&, const Joint_settings&, Joint_state&, \
-    bool&, const Bound_search_settings&);                                                               \
-  KEYWORD template bool is_valid_atlas<Indexed_surface<__VA_ARGS__>, Joint_state>(                      \
-    const Indexed_surface<__VA_ARGS__>&, const Joint_state&);                                           \
+  KEYWORD template Error_code run_plan<Indexed_surface<__VA_ARGS__>>(                                   \
+    const Indexed_surface<__VA_ARGS__>&, const std::vector<double>&, const Cut_parameterization_options&, \
+    Map_state&, Work_log&, Packing_result&, bool&);                                                     \
+  KEYWORD template bool is_valid_atlas<Indexed_surface<__VA_ARGS__>, Map_state>(                        \
+    const Indexed_surface<__VA_ARGS__>&, const Map_state&);                                             \
   }}}}
 #define CUT_PARAM_DECLARE_SHARED_INSTANCE(...) CUT_PARAM_SHARED_INSTANCE(extern, __VA_ARGS__)
 CUT_PARAM_FOR_EACH_SHARED_MESH(CUT_PARAM_DECLARE_SHARED_INSTANCE)

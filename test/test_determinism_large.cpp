@@ -56,7 +56,7 @@ TEST(Determinism_large, default_mode_above_the_metis_threshold)
 // 4,081 vertices (8,162 unknowns, over cholmod_threshold), under a
 // distortion bound that the default run does not meet: a low spike
 // (height 1), which the lean run leaves at E_d 4.845 before its default
-// splits (joint_optimization.h's default_distortion_target) and at 4.449
+// splits (tuning::default_distortion_target) and at 4.449
 // after them, under the bound 4.4. Its split trials (two at a time, beside
 // the run at the given λ) add cuts from the spike to the border until E_d
 // is within the bound, each split judged by Newton iterations on the whole

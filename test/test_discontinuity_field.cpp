@@ -10,8 +10,8 @@
 // edges.
 #include "generators.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/discontinuity_field.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/discontinuity_field.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 
 #include <Eigen/Dense>
 

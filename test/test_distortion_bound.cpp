@@ -15,6 +15,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 
 #include <atomic>
 #include <chrono>
@@ -143,23 +144,26 @@ TEST(Distortion_bound_splits, split_trials_reach_a_reachable_bound_by_cutting)
   const Surface_mesh mesh = make_mesh<Surface_mesh>(wide_cap());
   ic::Indexed_surface<Surface_mesh> surface;
   ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Joint_settings settings;
-  settings.distortion_bound = 4.2;
+  const SMP::Cut_parameterization_options options;
+  ic::Run_args settings = ic::default_run_args(options);
+  settings.bound = 4.2;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
-  ic::Joint_state start;
+  ic::Map_state start;
+  ic::Work_log log;
   start.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, settings, start), SMP::OK);
+  ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, options, {}, start, log), SMP::OK);
   ASSERT_TRUE(start.first_u_step_done);
   ASSERT_GT(ic::mean_distortion(start.chart, start.x), 4.2); // the start's map is above the bound
   for(bool best : {false, true})
   {
     SCOPED_TRACE(best ? "best of the candidates" : "first accepted");
-    ic::Joint_state trial = start;
-    ASSERT_EQ(ic::split_from_start(surface, face_lambda, settings, best, trial), SMP::OK);
+    ic::Map_state trial = start;
+    ic::Work_log trial_log;
+    ASSERT_EQ(ic::split_from_start(surface, face_lambda, options, {}, settings, best, trial, trial_log), SMP::OK);
     EXPECT_LE(trial.distortion, 4.2);
     EXPECT_NEAR(trial.distortion, ic::mean_distortion(trial.chart, trial.x), 1e-12);
     EXPECT_GT(ic::seam_length_3d(surface, trial.is_cut), ic::seam_length_3d(surface, start.is_cut));
-    EXPECT_GT(trial.newton_iterations, start.newton_iterations);
+    EXPECT_GT(trial_log.work.iterations, std::size_t(0));
     EXPECT_TRUE(trial.x.allFinite());
     EXPECT_EQ(ic::number_of_flipped_faces(trial.chart, trial.x), 0);
     const ic::Chart_topology topology = ic::chart_topology(trial.chart);
@@ -176,18 +180,20 @@ TEST(Default_target_splits, splits_that_do_not_pay_still_reach_the_target)
   const Surface_mesh mesh = make_mesh<Surface_mesh>(wide_cap());
   ic::Indexed_surface<Surface_mesh> surface;
   ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Joint_settings settings;
+  const SMP::Cut_parameterization_options options;
+  ic::Run_args settings = ic::default_run_args(options);
   settings.split.gain = 1e9;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
-  ic::Joint_state start;
+  ic::Map_state start;
+  ic::Work_log log;
   start.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, settings, start), SMP::OK);
-  ASSERT_EQ(ic::final_solve(surface, settings, false, start), SMP::OK);
+  ASSERT_EQ(ic::prepare_first_u_step(surface, face_lambda, options, {}, start, log), SMP::OK);
+  ASSERT_EQ(ic::final_solve(surface, settings.final, false, start, log), SMP::OK);
   start.distortion = ic::mean_distortion(start.chart, start.x);
-  ASSERT_GT(start.distortion, ic::default_distortion_target); // the solved map of the initial cut is above it
-  ic::Joint_state split = start;
-  ASSERT_EQ(ic::split_where_distorted(surface, settings, split), SMP::OK);
-  EXPECT_LE(split.distortion, ic::default_distortion_target) << "from " << start.distortion;
+  ASSERT_GT(start.distortion, ic::tuning::default_distortion_target); // the solved map of the initial cut is above it
+  ic::Map_state split = start;
+  ASSERT_EQ(ic::split_where_distorted(surface, options, {}, settings, settings.final, split, log), SMP::OK);
+  EXPECT_LE(split.distortion, ic::tuning::default_distortion_target) << "from " << start.distortion;
   EXPECT_NEAR(split.distortion, ic::mean_distortion(split.chart, split.x), 1e-12);
   EXPECT_GT(ic::seam_length_3d(surface, split.is_cut), ic::seam_length_3d(surface, start.is_cut));
   EXPECT_TRUE(split.x.allFinite());

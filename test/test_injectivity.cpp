@@ -12,7 +12,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Bounding_box_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/carried_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/carried_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/minimize_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>

@@ -15,7 +15,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/greedy_splits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -137,7 +138,7 @@ namespace {
 
 /// `surface` indexed from `mesh`, and `state` its uncut Tutte map (one
 /// circle per component) with its E_d: the start of the split tests.
-void uncut_tutte_start(const Surface_mesh& mesh, ic::Indexed_surface<Surface_mesh>& surface, ic::Joint_state& state)
+void uncut_tutte_start(const Surface_mesh& mesh, ic::Indexed_surface<Surface_mesh>& surface, ic::Map_state& state)
 {
   ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
   state.is_cut.assign(surface.edges.size(), 0);
@@ -156,7 +157,7 @@ TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
   Surface_mesh mesh;
   build_mesh(hemisphere_soup(8, 24), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ic::Joint_state start;
+  ic::Map_state start;
   ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, start));
 
   for(bool best : {false, true})
@@ -167,25 +168,26 @@ TEST(Greedy_splits, the_best_candidate_or_the_first_accepted_is_kept)
     settings.candidates = 3;
     settings.best_candidate = best;
     std::vector<std::vector<char>> judged; // the cut of each candidate, in the order judged
-    auto solve = [&](ic::Joint_state& trial, const std::vector<char>& faces) {
+    ic::Work_log log;
+    auto solve = [&](ic::Map_state& trial, ic::Work_log& trial_log, const std::vector<char>& faces) {
       // the faces to solve: those on the candidate's new cut, and only those
       EXPECT_EQ(faces, ic::faces_on_new_cuts(surface, start.is_cut, trial.is_cut));
       EXPECT_NE(std::count(faces.begin(), faces.end(), char(1)), 0);
       const double added = ic::seam_length_3d(surface, trial.is_cut);
       trial.distortion = start.distortion - (judged.size() == 1 ? 1. : 0.01) * added;
-      trial.newton_iterations += 10; // the work of a judgment
+      trial_log.work.iterations += 10; // the work of a judgment
       judged.push_back(trial.is_cut);
       return SMP::OK;
     };
     auto accept = [](double before, double after, double) { return after < before; };
-    ic::Joint_state state = start;
+    ic::Map_state state = start;
     int kept = 0;
-    ASSERT_EQ(ic::split_greedily(surface, settings, 0., solve, accept, state, kept), SMP::OK);
+    ASSERT_EQ(ic::split_greedily(surface, settings, 0., solve, accept, state, log, kept), SMP::OK);
     EXPECT_EQ(kept, 1);
     ASSERT_EQ(judged.size(), best ? std::size_t(3) : std::size_t(1));
     EXPECT_EQ(state.is_cut, judged[best ? 1 : 0]);
     EXPECT_GT(ic::seam_length_3d(surface, state.is_cut), 0.);
-    EXPECT_EQ(state.newton_iterations, 10 * judged.size()); // every judgment counted
+    EXPECT_EQ(log.work.iterations, 10 * judged.size()); // every judgment counted
     if(best)
     {
       EXPECT_NE(judged[0], judged[1]);
@@ -201,21 +203,22 @@ TEST(Greedy_splits, a_batch_is_cut_and_judged_in_one_trial)
   Surface_mesh mesh;
   build_mesh(hemisphere_soup(8, 24), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ic::Joint_state state;
+  ic::Map_state state;
   ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, state));
   ic::Split_settings settings;
   settings.max_splits = 4;
   settings.batch = 4;
   int judged = 0;
   std::vector<char> first_cut;
-  auto solve = [&](ic::Joint_state& trial, const std::vector<char>&) {
+  ic::Work_log log;
+  auto solve = [&](ic::Map_state& trial, ic::Work_log&, const std::vector<char>&) {
     if(judged++ == 0) first_cut = trial.is_cut;
     trial.distortion = 4.; // every trial pays
     return SMP::OK;
   };
   auto accept = [](double before, double after, double) { return after < before; };
   int kept = 0;
-  ASSERT_EQ(ic::split_greedily(surface, settings, 4.5, solve, accept, state, kept), SMP::OK);
+  ASSERT_EQ(ic::split_greedily(surface, settings, 4.5, solve, accept, state, log, kept), SMP::OK);
   EXPECT_EQ(judged, 1); // one trial: E_d 4 is below the stop
   EXPECT_GE(kept, 2);
   EXPECT_LE(kept, 4);
@@ -230,7 +233,7 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
   Surface_mesh mesh;
   build_mesh(two_components_soup(6), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
-  ic::Joint_state s;
+  ic::Map_state s;
   ASSERT_NO_FATAL_FAILURE(uncut_tutte_start(mesh, surface, s)); // circles: distorted
   int charts = 0;
   const std::vector<int> chart_of_face = ic::chart_of_faces(s.chart, charts);
@@ -239,10 +242,11 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
   flagged[0] = 1;
   const ic::UV_vector before = s.x;
   const double distortion_before = ic::mean_distortion(s.chart, s.x);
-  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, flagged, s), SMP::OK);
+  ic::Work_log log;
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, flagged, s, log), SMP::OK);
   EXPECT_LT(s.distortion, distortion_before);
   EXPECT_DOUBLE_EQ(s.distortion, ic::mean_distortion(s.chart, s.x));
-  EXPECT_GT(s.newton_iterations, 0);
+  EXPECT_GT(log.work.iterations, std::size_t(0));
   for(std::size_t f = 0; f < s.chart.number_of_faces(); ++f)
     for(int v : s.chart.faces[f])
     {
@@ -250,14 +254,14 @@ TEST(Greedy_splits, relax_charts_solves_the_flagged_charts_alone)
       if(chart_of_face[f] != chart_of_face[0]) EXPECT_FALSE(moved) << "face " << f << " of the other chart moved";
     }
   // no flag: the whole map, as relax_map()
-  ic::Joint_state whole = s;
-  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, {}, whole), SMP::OK);
+  ic::Map_state whole = s;
+  ASSERT_EQ(ic::relax_charts(30, 1e-9, SMP::Inner_solver::NEWTON, {}, whole, log), SMP::OK);
   EXPECT_LT(whole.distortion, s.distortion);
 }
 
 // A dense model that the method leaves a little above E_d 4.6 (CGAL's
 // femur.off, 7,798 faces, closed: 4.787 without the default target) is split
-// until its E_d is at most 4.6 (joint_optimization.h's
+// until its E_d is at most 4.6 (pipeline/plan.h's
 // default_distortion_target; measured: 4.564, E_s 3.73 -> 4.02, where the
 // final solve after a first round of splits ended at 4.60023 and a second
 // round followed), into a valid atlas (check_cut_result()).
@@ -268,7 +272,7 @@ TEST(Default_target, a_map_left_above_it_is_split_down_to_it)
   ASSERT_TRUE(read_cgal_model("femur.off", mesh));
   Cut_run<Surface_mesh> run(mesh);
   run_and_check(mesh, run);
-  EXPECT_LE(run.result.distortion, ic::default_distortion_target);
+  EXPECT_LE(run.result.distortion, ic::tuning::default_distortion_target);
   EXPECT_GT(run.result.distortion, 4.);
 }
 
@@ -317,7 +321,7 @@ bool mpi_cut_into_parts(int axis, Surface_mesh& mesh)
 // A low-poly model whose splits reach a low E_d only by maps that cross
 // their own border, where the valid map the final solve starts again from
 // stays far above: its crossing charts are cut into overlap-free pieces
-// instead (joint_optimization.h's final_solve_after_splits()). CGAL's mpi.off
+// instead (pipeline/plan.h's final_solve_after_splits()). CGAL's mpi.off
 // cut into parts along z (180 faces) ended at E_d 5.45 (measured before the
 // pieces; now 4.43, E_s 7.62 -> 10.24), below the default target now, in a
 // valid atlas (check_cut_result()), the same for 1, 2 and 4 threads.
@@ -329,7 +333,7 @@ TEST(Default_target, a_low_poly_model_in_parts_gets_overlap_free_pieces)
   ASSERT_EQ(mesh.number_of_faces(), 180u);
   Cut_run<Surface_mesh> run(mesh);
   run_and_check(mesh, run);
-  EXPECT_LE(run.result.distortion, ic::default_distortion_target);
+  EXPECT_LE(run.result.distortion, ic::tuning::default_distortion_target);
   EXPECT_GT(run.result.distortion, 4.);
   // the same seams, UVs and Newton iterations for any number of threads
   expect_same_result_for_thread_counts(mesh, {1, 2, 4}, [](Cut_run<Surface_mesh>& r) {
@@ -343,7 +347,7 @@ TEST(Default_target, a_low_poly_model_in_parts_gets_overlap_free_pieces)
 // (CGAL's mpi_triang.off, 180 faces; its sibling mpi.off reaches 4.58 with
 // the pieces, without the search, since they came)
 // gets the bound search at the default target after its run
-// (distortion_bound.h's default_target_joint_optimization(); measured here:
+// (pipeline/plan.h's default_target_run(); measured here:
 // E_d 4.5908 both), a valid atlas (check_cut_result()) whose Newton count
 // holds both runs' work.
 TEST(Default_target, a_low_poly_model_the_splits_leave_above_it_gets_the_bound_search)
@@ -351,15 +355,15 @@ TEST(Default_target, a_low_poly_model_the_splits_leave_above_it_gets_the_bound_s
   if(std::getenv("CGAL_DATA_DIR") == nullptr) GTEST_SKIP() << "CGAL_DATA_DIR not set";
   Surface_mesh mesh;
   ASSERT_TRUE(read_cgal_model("mpi_triang.off", mesh));
-  ASSERT_LE(mesh.number_of_faces(), ic::default_target_search_max_faces);
+  ASSERT_LE(mesh.number_of_faces(), ic::tuning::default_target_search_max_faces);
   Cut_run<Surface_mesh> run(mesh);
   run_and_check(mesh, run);
-  EXPECT_LE(run.result.distortion, ic::default_distortion_target);
+  EXPECT_LE(run.result.distortion, ic::tuning::default_distortion_target);
   EXPECT_GT(run.result.distortion, 4.);
 
   // the bound search alone (same input), whose work the default run includes
   Cut_run<Surface_mesh> bounded(mesh);
-  bounded.run(SMP::parameters::distortion_bound(ic::default_distortion_target));
+  bounded.run(SMP::parameters::distortion_bound(ic::tuning::default_distortion_target));
   ASSERT_EQ(bounded.result.error, SMP::OK);
   EXPECT_DOUBLE_EQ(run.result.distortion, bounded.result.distortion);
   EXPECT_GT(run.result.newton_iterations, bounded.result.newton_iterations);

@@ -7,7 +7,7 @@
 #include "cut_result_checks.h"
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -154,21 +154,23 @@ TEST(Multiresolution, splits_are_decided_on_the_copy)
   ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
   ASSERT_TRUE(surface.number_of_faces() > std::size_t(2 * coarse_faces));
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
-  auto run = [&](bool greedy_splits, ic::Joint_state& state) {
-    ic::Joint_settings settings;
-    settings.multiresolution_faces = coarse_faces;
-    settings.greedy_splits = greedy_splits;
+  auto run = [&](bool greedy_splits, ic::Map_state& state) {
+    SMP::Cut_parameterization_options options;
+    options.multiresolution_faces = coarse_faces;
+    ic::Run_args settings = ic::default_run_args(options);
+    settings.splits = greedy_splits;
     state.is_cut.assign(surface.edges.size(), 0);
-    return ic::optimize_cut_mesh(surface, face_lambda, settings, state);
+    ic::Work_log log;
+    return ic::optimize_cut_mesh(surface, face_lambda, options, {}, settings, state, log);
   };
-  ic::Joint_state split, unsplit;
+  ic::Map_state split, unsplit;
   ASSERT_EQ(run(true, split), SMP::OK);
   ASSERT_EQ(run(false, unsplit), SMP::OK);
   std::cout << std::setprecision(5) << "    without splits: E_d " << unsplit.distortion << ", E_s "
             << ic::seam_length_3d(surface, unsplit.is_cut) << "; split on the copy: E_d " << split.distortion << ", E_s "
             << ic::seam_length_3d(surface, split.is_cut) << std::endl;
-  ASSERT_GT(unsplit.distortion, ic::default_distortion_target);
-  EXPECT_LE(split.distortion, ic::default_distortion_target);
+  ASSERT_GT(unsplit.distortion, ic::tuning::default_distortion_target);
+  EXPECT_LE(split.distortion, ic::tuning::default_distortion_target);
   EXPECT_GT(ic::seam_length_3d(surface, split.is_cut), ic::seam_length_3d(surface, unsplit.is_cut));
   EXPECT_NEAR(split.distortion, ic::mean_distortion(split.chart, split.x), 1e-12);
   EXPECT_TRUE(split.x.allFinite());

@@ -1,12 +1,12 @@
 // Charts whose map overlaps itself much are cut into pieces that do not
-// (overlap_partition.h), instead of being solved again from their Tutte map
+// (atlas/overlap_partition.h), instead of being solved again from their Tutte map
 // under the border barrier: the overlap test on UV triangles, the pieces of
 // a ramp laid flat over three turns, and the final solve that uses them.
 #include "generators.h"
 #include "test_support.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/overlap_partition.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/overlap_partition.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Simple_cartesian.h>
@@ -36,7 +36,8 @@ struct Flat_ramp
 {
   Surface_mesh mesh;
   ic::Indexed_surface<Surface_mesh> surface;
-  ic::Joint_state state;
+  ic::Map_state state;
+  ic::Work_log log;
 
   Flat_ramp()
   {
@@ -91,7 +92,7 @@ TEST(OverlapPartition, triangles_overlap_tells_overlap_from_touch_and_gap)
 TEST(OverlapPartition, pieces_of_a_map_that_overlaps_itself_do_not)
 {
   Flat_ramp ramp;
-  ic::Joint_state& state = ramp.state;
+  ic::Map_state& state = ramp.state;
   const std::size_t nf = state.chart.number_of_faces();
   ASSERT_EQ(number_of_charts(state.chart), 1);
   ASSERT_EQ(ic::number_of_flipped_faces(state.chart, state.x), 0);
@@ -140,28 +141,28 @@ TEST(OverlapPartition, pieces_never_cut_a_forbidden_edge)
 TEST(OverlapPartition, the_final_solve_cuts_a_chart_that_overlaps_itself_much)
 {
   Flat_ramp pieces, whole;
-  ic::Joint_settings settings;
+  ic::Final_solve_args settings = ic::default_run_args(SMP::Cut_parameterization_options()).final;
   settings.overlap_partition_faces = 10;
-  ASSERT_EQ(ic::final_solve(pieces.surface, settings, false, pieces.state), SMP::OK);
+  ASSERT_EQ(ic::final_solve(pieces.surface, settings, false, pieces.state, pieces.log), SMP::OK);
   settings.overlap_partition_faces = 0;
-  ASSERT_EQ(ic::final_solve(whole.surface, settings, false, whole.state), SMP::OK);
+  ASSERT_EQ(ic::final_solve(whole.surface, settings, false, whole.state, whole.log), SMP::OK);
 
   EXPECT_GE(number_of_charts(pieces.state.chart), 3);
   EXPECT_EQ(number_of_charts(whole.state.chart), 1);
-  for(const ic::Joint_state* s : {&pieces.state, &whole.state})
+  for(const ic::Map_state* s : {&pieces.state, &whole.state})
   {
     EXPECT_EQ(ic::number_of_flipped_faces(s->chart, s->x), 0);
     const std::vector<char> crossing = ic::Border_barrier_term(s->chart).charts_with_crossing(s->x);
     EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
   }
-  EXPECT_LT(pieces.state.newton_iterations, whole.state.newton_iterations);
+  EXPECT_LT(pieces.log.work.iterations, whole.log.work.iterations);
   // the pieces keep the low distortion of the map without the barrier
   EXPECT_LT(ic::mean_distortion(pieces.state.chart, pieces.state.x), ic::mean_distortion(whole.state.chart, whole.state.x));
 
   // a threshold above the overlapping faces: the whole ramp again
   Flat_ramp high;
   settings.overlap_partition_faces = int(high.state.chart.number_of_faces());
-  ASSERT_EQ(ic::final_solve(high.surface, settings, false, high.state), SMP::OK);
+  ASSERT_EQ(ic::final_solve(high.surface, settings, false, high.state, high.log), SMP::OK);
   EXPECT_EQ(number_of_charts(high.state.chart), 1);
 }
 
@@ -171,19 +172,17 @@ TEST(OverlapPartition, the_final_solve_cuts_a_chart_that_overlaps_itself_much)
 TEST(OverlapPartition, no_rerouted_seams_for_a_map_that_overlaps_itself)
 {
   Flat_ramp ramp;
-  ic::Joint_settings settings;
-  EXPECT_TRUE(ic::overlaps_itself(settings, ramp.state));
-  settings.global_injectivity = false;
-  EXPECT_FALSE(ic::overlaps_itself(settings, ramp.state));
+  EXPECT_TRUE(ic::overlaps_itself(true, ramp.state));
+  EXPECT_FALSE(ic::overlaps_itself(false, ramp.state)); // without global injectivity
 
   Surface_mesh mesh;
   build_mesh(spiral_ramp_soup(32, 4, 0.8), mesh);
   ic::Indexed_surface<Surface_mesh> surface;
   ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Joint_state state;
+  ic::Map_state state;
   state.is_cut.assign(surface.edges.size(), 0);
   ic::build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
   ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
   ic::Distortion_minimizer(state.chart, std::vector<double>(state.chart.number_of_faces(), 1.)).minimize(state.x, 500, 1e-9);
-  EXPECT_FALSE(ic::overlaps_itself(ic::Joint_settings(), state));
+  EXPECT_FALSE(ic::overlaps_itself(true, state));
 }

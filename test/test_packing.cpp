@@ -5,7 +5,7 @@
 // single-chart orientation, degenerate inputs, and 2000 tiny charts in time.
 #include "generators.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_packing.h>
 
 #include <algorithm>
 #include <chrono>

@@ -11,9 +11,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_merging.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_straightening.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_merging.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_straightening.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <algorithm>
@@ -192,23 +192,24 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
 {
   const Grid g(0.15); // a bump: a seam moved off it costs distortion
   ASSERT_TRUE(g.index_ok);
-  ic::Joint_state start;
+  ic::Map_state start;
   start.is_cut = g.path(wave);
   ic::build_chart_mesh(g.surface, start.is_cut, start.chart, start.corner_uv);
   ASSERT_TRUE(ic::disk_charts_embedding(start.chart, start.x) == ic::Embedding_status::OK);
-  ic::Joint_settings settings;
+  ic::Run_args settings = ic::default_run_args(SMP::Cut_parameterization_options());
   ASSERT_EQ(settings.rerouting_rings, 1);
+  ic::Work_log wave_log, row_log, log;
 
   // the wave's own final solve (from its map, as after the alternation), and
   // its straight row's (rerouted within a ring, from a Tutte map)
-  ic::Joint_state wave_solved = start;
-  ASSERT_EQ(ic::final_solve(g.surface, settings, false, wave_solved), SMP::OK);
+  ic::Map_state wave_solved = start;
+  ASSERT_EQ(ic::final_solve(g.surface, settings.final, false, wave_solved, wave_log), SMP::OK);
   const double wave_distortion = ic::mean_distortion(wave_solved.chart, wave_solved.x);
-  ic::Joint_state row_solved = start;
+  ic::Map_state row_solved = start;
   ASSERT_EQ(ic::straighten_seams(g.surface, ic::Cut_rules(), {}, 1, row_solved.is_cut), 1);
   ic::build_chart_mesh(g.surface, row_solved.is_cut, row_solved.chart, row_solved.corner_uv);
   ASSERT_TRUE(ic::disk_charts_embedding(row_solved.chart, row_solved.x) == ic::Embedding_status::OK);
-  ASSERT_EQ(ic::final_solve(g.surface, settings, true, row_solved), SMP::OK);
+  ASSERT_EQ(ic::final_solve(g.surface, settings.final, true, row_solved, row_log), SMP::OK);
   const double row_distortion = ic::mean_distortion(row_solved.chart, row_solved.x);
   ASSERT_LT(g.length(row_solved.is_cut), g.length(start.is_cut));
   // away from the bump the straight row costs distortion (what makes the next checks tell)
@@ -216,33 +217,34 @@ TEST(Seam_shortening, the_final_solve_keeps_rerouted_seams_within_the_allowance)
 
   // an allowance above that cost: the straight row, solved, without flips
   settings.rerouting_allowance = 2. * (row_distortion - wave_distortion);
-  ic::Joint_state generous = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, generous), SMP::OK);
+  ic::Map_state generous = start;
+  ic::Work_log generous_log;
+  ASSERT_EQ(ic::final_solve_rerouted(g.surface, settings.final, settings, {}, false, generous, generous_log), SMP::OK);
   EXPECT_EQ(generous.is_cut, row_solved.is_cut);
   EXPECT_NEAR(ic::mean_distortion(generous.chart, generous.x), row_distortion, 1e-12);
   EXPECT_EQ(ic::number_of_flipped_faces(generous.chart, generous.x), 0);
   // both solves counted
-  EXPECT_EQ(generous.newton_iterations, wave_solved.newton_iterations + row_solved.newton_iterations);
+  EXPECT_EQ(generous_log.work.iterations, wave_log.work.iterations + row_log.work.iterations);
 
   // an allowance below it: the wave and its own map
   settings.rerouting_allowance = 0.5 * (row_distortion - wave_distortion);
-  ic::Joint_state strict = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, strict), SMP::OK);
+  ic::Map_state strict = start;
+  ASSERT_EQ(ic::final_solve_rerouted(g.surface, settings.final, settings, {}, false, strict, log), SMP::OK);
   EXPECT_EQ(strict.is_cut, start.is_cut);
   EXPECT_NEAR(ic::mean_distortion(strict.chart, strict.x), wave_distortion, 1e-12);
 
   // the user's seams (`keep`) are never rerouted; seams solved from a Tutte
   // map (carried from a simplified copy) are not either; no rings, no rerouting
   settings.rerouting_allowance = 1.;
-  ic::Joint_state given = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, start.is_cut, false, given), SMP::OK);
+  ic::Map_state given = start;
+  ASSERT_EQ(ic::final_solve_rerouted(g.surface, settings.final, settings, start.is_cut, false, given, log), SMP::OK);
   EXPECT_EQ(given.is_cut, start.is_cut);
-  ic::Joint_state carried = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, true, carried), SMP::OK);
+  ic::Map_state carried = start;
+  ASSERT_EQ(ic::final_solve_rerouted(g.surface, settings.final, settings, {}, true, carried, log), SMP::OK);
   EXPECT_EQ(carried.is_cut, start.is_cut);
   settings.rerouting_rings = 0;
-  ic::Joint_state off = start;
-  ASSERT_EQ(ic::final_solve_with_rerouting(g.surface, settings, {}, false, off), SMP::OK);
+  ic::Map_state off = start;
+  ASSERT_EQ(ic::final_solve_rerouted(g.surface, settings.final, settings, {}, false, off, log), SMP::OK);
   EXPECT_EQ(off.is_cut, start.is_cut);
 }
 
@@ -250,7 +252,7 @@ TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)
 {
   const Grid g;
   ASSERT_TRUE(g.index_ok);
-  ic::Joint_state state;
+  ic::Map_state state;
   state.is_cut = g.path(wave);
   ic::build_chart_mesh(g.surface, state.is_cut, state.chart, state.corner_uv);
   ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
@@ -263,9 +265,10 @@ TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)
   for(std::size_t k : {std::size_t(3), branches[0].edges.size() - 1})
   {
     SCOPED_TRACE("zipped edges " + to_text(k));
-    ic::Joint_state zipped;
+    ic::Map_state zipped;
+    ic::Work_log log;
     const std::vector<int> edges(branches[0].edges.begin(), branches[0].edges.begin() + k);
-    ASSERT_TRUE(ic::zip_seam(g.surface, state, edges, zipped));
+    ASSERT_TRUE(ic::zip_seam(g.surface, state, edges, zipped, log));
     EXPECT_EQ(ic::number_of_flipped_faces(zipped.chart, zipped.x), 0);
     EXPECT_TRUE(zipped.x.allFinite());
     EXPECT_EQ(zipped.chart.number_of_vertices, state.chart.number_of_vertices - int(k));
@@ -276,8 +279,9 @@ TEST(Seam_shortening, a_slit_is_pulled_shut_and_zipped_without_flips)
                 }()), 1e-12);
   }
   // zipping the whole slit leaves no seam; the grid is a disk without it
-  ic::Joint_state whole;
-  EXPECT_TRUE(ic::zip_seam(g.surface, state, branches[0].edges, whole));
+  ic::Map_state whole;
+  ic::Work_log log;
+  EXPECT_TRUE(ic::zip_seam(g.surface, state, branches[0].edges, whole, log));
   EXPECT_EQ(ic::number_of_flipped_faces(whole.chart, whole.x), 0);
 }
 

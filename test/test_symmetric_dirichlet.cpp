@@ -1,4 +1,4 @@
-// Per-face symmetric Dirichlet energy (internal/Cut_parameterization/symmetric_dirichlet.h):
+// Per-face symmetric Dirichlet energy (internal/Cut_parameterization/energy/symmetric_dirichlet.h):
 // value against singular values, gradient against central finite
 // differences (w.r.t. the Jacobian and w.r.t. the 6 UV coordinates of a
 // face), projected Hessian against the PSD projection of the finite-

@@ -4,9 +4,8 @@
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas_validity.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/distortion_bound.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/joint_optimization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/atlas_validity.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
 
@@ -92,47 +91,11 @@ struct Ignored_face_map
   friend void put(const Ignored_face_map&, const Key&, const Value&) {}
 };
 
-inline Joint_settings joint_settings(const Cut_parameterization_options& o)
-{
-  Joint_settings s;
-  s.lambda = o.lambda;
-  s.epsilon_start = o.epsilon_start;
-  s.epsilon_end = o.epsilon_end;
-  s.iterations_per_epsilon = o.iterations_per_epsilon;
-  s.gamma = o.gamma;
-  s.passes = o.number_of_passes;
-  s.minimum_relative_cut_length = o.minimum_relative_cut_length;
-  s.max_newton_iterations = o.number_of_iterations;
-  s.bounding_box_aspect_ratio = o.bounding_box_aspect_ratio_value();
-  s.bounding_box_stiffness = o.bounding_box_stiffness_value();
-  s.bounding_box_distortion_budget = o.bounding_box_distortion_budget_value();
-  s.distortion_bound = o.distortion_bound;
-  s.multiresolution_faces = o.multiresolution_faces;
-  s.global_injectivity = o.global_injectivity;
-  s.inner_solver = o.inner_solver;
-  s.packing.texture_size = o.texture_size;
-  s.packing.padding = o.padding;
-  s.packing.world_units = o.world_units;
-  const std::function<bool(const Cut_and_parameterize_progress&)> callback = o.progress_callback;
-  if(callback)
-    s.progress = [callback](const Joint_progress& p) {
-      Cut_and_parameterize_progress q;
-      q.phase = p.phase;
-      q.pass = p.pass;
-      q.alternation = p.alternation;
-      q.alternations_per_pass = p.alternations_per_pass;
-      q.epsilon = p.epsilon;
-      q.distortion = p.distortion;
-      return callback(q);
-    };
-  return s;
-}
-
 /// UV of every corner at its halfedge; a border halfedge gets the UV of the
 /// corner at its target in the face across.
 template <typename TriangleMesh, typename HalfedgeUVMap>
 void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMesh>& surface,
-                      const Joint_state& state, HalfedgeUVMap uvmap)
+                      const Map_state& state, HalfedgeUVMap uvmap)
 {
   using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
   auto uv = [&](int corner) {
@@ -148,13 +111,13 @@ void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 
 /// No `forbidden_seam_edge_map` given: nothing is forbidden.
 template <typename Surface>
-bool read_forbidden_edges(const Surface&, CGAL::internal_np::Param_not_found, Joint_state&) { return true; }
+bool read_forbidden_edges(const Surface&, CGAL::internal_np::Param_not_found, Map_state&) { return true; }
 
 /// Reads the forbidden edges into `state.rules.forbidden` (left empty if none is
 /// flagged; flags on border edges are ignored). False if an edge is both a
 /// given seam and forbidden.
 template <typename Surface, typename ForbiddenEdgeMap>
-bool read_forbidden_edges(const Surface& surface, const ForbiddenEdgeMap& forbidden_map, Joint_state& state)
+bool read_forbidden_edges(const Surface& surface, const ForbiddenEdgeMap& forbidden_map, Map_state& state)
 {
   std::vector<char> forbidden(surface.edges.size(), 0);
   bool any = false;
@@ -170,7 +133,7 @@ bool read_forbidden_edges(const Surface& surface, const ForbiddenEdgeMap& forbid
 
 /// Seams = cut edges that are not on the mesh's boundary.
 template <typename Surface, typename SeamEdgeMap>
-void write_seams(const Surface& surface, const Joint_state& state, SeamEdgeMap seam_edge_map)
+void write_seams(const Surface& surface, const Map_state& state, SeamEdgeMap seam_edge_map)
 {
   std::vector<char> border(surface.edges.size(), 0);
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)
@@ -180,20 +143,21 @@ void write_seams(const Surface& surface, const Joint_state& state, SeamEdgeMap s
 }
 
 /// Copies the phases' times, and `total` from `start` to now.
-inline void fill_timings(const Joint_state& state, Steady_clock::time_point start, Cut_and_parameterize_result& result)
+inline void fill_timings(const Work_log& log, Steady_clock::time_point start, Cut_and_parameterize_result& result)
 {
   Cut_and_parameterize_timings& t = result.timings;
-  t.initialization = state.timings.initialization;
-  t.u_steps = state.timings.u_steps;
-  t.v_steps = state.timings.v_steps;
-  t.cut_extraction = state.timings.cut_extraction;
-  t.final_solve = state.timings.final_solve;
-  t.packing = state.timings.packing;
+  t.initialization = log.timings.initialization;
+  t.u_steps = log.timings.u_steps;
+  t.v_steps = log.timings.v_steps;
+  t.cut_extraction = log.timings.cut_extraction;
+  t.final_solve = log.timings.final_solve;
+  t.packing = log.timings.packing;
   t.total = seconds_since(start);
 }
 
 template <typename Surface>
-void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_parameterize_result& result)
+void fill_statistics(const Surface& surface, const Map_state& state, const Work_log& log, const Packing_result& packing,
+                     Cut_and_parameterize_result& result)
 {
   int charts = 0;
   chart_of_faces(state.chart, charts);
@@ -206,18 +170,18 @@ void fill_statistics(const Surface& surface, const Joint_state& state, Cut_and_p
       ++result.number_of_seam_edges;
     }
   result.seam_length = seam / std::sqrt(state.chart.total_area() / M_PI);
-  result.newton_iterations = state.newton_iterations;
-  result.number_of_factorizations = state.factorizations;
-  result.number_of_solves = state.solves;
-  result.alternation_newton_iterations = state.u_step_work.iterations;
-  result.alternation_factorizations = state.u_step_work.factorizations;
-  result.alternation_solves = state.u_step_work.solves;
-  result.v_step_factorizations = state.v_step_factorizations;
+  result.newton_iterations = log.work.iterations;
+  result.number_of_factorizations = log.work.factorizations;
+  result.number_of_solves = log.work.solves;
+  result.alternation_newton_iterations = log.u_step_work.iterations;
+  result.alternation_factorizations = log.u_step_work.factorizations;
+  result.alternation_solves = log.u_step_work.solves;
+  result.v_step_factorizations = log.v_step_factorizations;
   result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
   result.distortion = state.distortion;
-  result.uv_coverage = state.packing.coverage;
-  result.uv_scale = state.packing.scale;
+  result.uv_coverage = packing.coverage;
+  result.uv_scale = packing.scale;
   result.border_crossings = count_border_crossings(border_segments(state.chart), state.x);
 }
 
@@ -509,11 +473,13 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
 
   const ic::Steady_clock::time_point start = ic::Steady_clock::now();
   Cut_and_parameterize_result result;
-  ic::Joint_state state;
+  ic::Map_state state;
+  ic::Work_log log;
+  ic::Packing_result packing;
   // every return goes through here, so that the timings are filled after an error too
   auto finish = [&](Error_code error) {
     result.error = error;
-    ic::fill_timings(state, start, result);
+    ic::fill_timings(log, start, result);
     return result;
   };
   Surface surface;
@@ -525,7 +491,6 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
      ic::number_of_degenerate_faces(surface) > 0)
     return finish(ERROR_DEGENERATE_FACE);
 
-  const ic::Joint_settings settings = internal::cut::joint_settings(options);
   std::vector<double> face_lambda(surface.number_of_faces());
   const auto lambda_map = choose_parameter(get_parameter(np, internal_np::face_lambda_map),
                                            CGAL::Constant_property_map<face_descriptor, double>(1.));
@@ -539,19 +504,17 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   for(std::size_t e = 0; e < surface.edges.size(); ++e) state.is_cut[e] = get(seam_edge_map, surface.edges[e]);
   if(!ic::read_forbidden_edges(surface, get_parameter(np, internal_np::forbidden_seam_edge_map), state))
     return finish(ERROR_WRONG_PARAMETER);
-  state.timings.initialization = ic::seconds_since(start); // the optimization adds the rest
+  log.timings.initialization = ic::seconds_since(start); // the optimization adds the rest
 
   const Error_code status =
-    settings.distortion_bound > 0.
-      ? ic::bounded_joint_optimization(surface, face_lambda, settings, state, result.distortion_bound_met)
-      : ic::default_target_joint_optimization(surface, face_lambda, settings, state);
+    ic::run_plan(surface, face_lambda, options, state, log, packing, result.distortion_bound_met);
   if(status != OK) return finish(status);
 
   ic::write_corner_uvs(mesh, surface, state, uvmap);
   ic::write_seams(surface, state, seam_edge_map);
   auto v_map = choose_parameter(get_parameter(np, internal_np::face_discontinuity_map), ic::Ignored_face_map());
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f) put(v_map, surface.faces[f], state.v.size() ? state.v[f] : 1.);
-  ic::fill_statistics(surface, state, result);
+  ic::fill_statistics(surface, state, log, packing, result);
   CGAL_postcondition(ic::is_valid_atlas(surface, state));
   return finish(OK);
 }

@@ -12,8 +12,9 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 #define CGAL_SMP_CUT_INTERNAL_CUT_EXTRACTION_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Cut_rules.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/cut_paths.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 
 #include <algorithm>
@@ -26,12 +27,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
-
-struct Cut_path
-{
-  std::vector<int> edges; // indices into surface.edges
-  double length = 0.;     // 3D length of the edges not already on the boundary
-};
 
 /// Edge graph of one patch, on local vertex indices.
 struct Patch_graph
@@ -64,17 +59,6 @@ inline std::vector<Cut_path> patch_cut_tree(const Patch_graph& patch, double min
     branches.push_back({paths.path_edges(tip), paths.distance[tip]});
   }
   return branches;
-}
-
-/// Boundary vertices of the cut mesh (on a border or cut edge).
-template <typename Surface>
-std::vector<char> cut_boundary_vertices(const Surface& surface, const std::vector<char>& is_cut)
-{
-  std::vector<char> on_boundary(surface.number_of_vertices(), 0);
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-    if(surface.twin[fe] < 0 || is_cut[surface.edge_of[fe]])
-      on_boundary[surface.edge_source(fe)] = on_boundary[surface.edge_target(fe)] = 1;
-  return on_boundary;
 }
 
 /// Faces with v < 1/2, grouped into patches connected across uncut edges.

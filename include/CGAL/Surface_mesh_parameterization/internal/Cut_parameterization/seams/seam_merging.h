@@ -24,13 +24,16 @@
 #define CGAL_SMP_CUT_INTERNAL_SEAM_MERGING_H
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/greedy_splits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Distortion_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/vertex_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/cut_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/Map_state.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/Projected_newton_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Seam_closing_term.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_paths.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <algorithm>
 #include <array>
@@ -43,11 +46,11 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 
-/// How far the merges go (the defaults are what `cut_and_parameterize()` uses).
+/// How far the merges go (the defaults: tuning.h).
 struct Merge_settings
 {
-  int max_trials = 48;        // zips solved at most
-  int newton_iterations = 20; // Newton iterations that judge a zip
+  int max_trials = tuning::merge_max_trials;               // zips solved at most
+  int newton_iterations = tuning::merge_newton_iterations; // Newton iterations that judge a zip
 };
 
 /// The seams and the map after a zip.
@@ -117,7 +120,8 @@ inline bool pull_pairs_together(const Chart_mesh& chart, const std::vector<std::
 /// false (and leaves `zipped` undefined) if a chart would not be a disk or
 /// a face would still flip.
 template <typename Surface>
-bool zip_seam(const Surface& surface, const Joint_state& state, const std::vector<int>& edges, Joint_state& zipped)
+bool zip_seam(const Surface& surface, const Map_state& state, const std::vector<int>& edges, Map_state& zipped,
+              Work_log& log)
 {
   zipped = state;
   for(int e : edges) zipped.is_cut[e] = 0;
@@ -129,7 +133,7 @@ bool zip_seam(const Surface& surface, const Joint_state& state, const std::vecto
   zipped.x = joined_positions(state.corner_uv, state.x, zipped.corner_uv, zipped.chart.number_of_vertices, pairs);
   if(number_of_flipped_faces(zipped.chart, zipped.x) == 0) return true;
   UV_vector pulled = state.x;
-  if(!pull_pairs_together(state.chart, pairs, pulled, zipped.newton_iterations, zipped.factorizations)) return false;
+  if(!pull_pairs_together(state.chart, pairs, pulled, log.work.iterations, log.work.factorizations)) return false;
   zipped.x = joined_positions(state.corner_uv, pulled, zipped.corner_uv, zipped.chart.number_of_vertices, pairs);
   return number_of_flipped_faces(zipped.chart, zipped.x) == 0;
 }
@@ -141,10 +145,10 @@ bool zip_seam(const Surface& surface, const Joint_state& state, const std::vecto
 /// last accepted one); `kept` gets the seams and map after each zip kept.
 template <typename Surface, typename Solve, typename Accept>
 Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, const std::vector<char>& keep,
-                          Solve solve, Accept accept, Joint_state& state, std::vector<Merge_step>& kept)
+                          Solve solve, Accept accept, Map_state& state, Work_log& log, std::vector<Merge_step>& kept)
 {
   kept.clear();
-  const bool at_once = surface.number_of_faces() <= two_states_at_once_max_faces;
+  const bool at_once = surface.number_of_faces() <= tuning::two_states_at_once_max_faces;
   std::set<int> done; // tips whose branch was tried to the end
   for(int trials = 0; trials < merge.max_trials;)
   {
@@ -177,13 +181,14 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
     {
       bool zipped = false;
       Error_code status = OK;
-      Joint_state trial;
+      Map_state trial;
+      Work_log log; // its own work
     };
     auto attempt = [&](std::size_t k, Attempt& a) {
-      a.zipped = zip_seam(surface, state, std::vector<int>(branch.edges.begin(), branch.edges.begin() + k), a.trial);
-      if(a.zipped) a.status = solve(a.trial);
+      a.zipped = zip_seam(surface, state, std::vector<int>(branch.edges.begin(), branch.edges.begin() + k), a.trial,
+                          a.log);
+      if(a.zipped) a.status = solve(a.trial, a.log);
     };
-    const std::size_t newton_before = state.newton_iterations, factorizations_before = state.factorizations;
     std::size_t newton_work = 0, factorization_work = 0; // of the attempts not kept
     bool zipped_some = false;
     for(std::size_t i = 0; i < lengths.size() && trials < merge.max_trials && !zipped_some; i += 2)
@@ -202,6 +207,7 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
           if(accept(state.distortion, a.trial.distortion))
           {
             state = std::move(a.trial);
+            log.add(a.log);
             zipped_some = true;
             kept.push_back({state.is_cut, state.x});
             continue;
@@ -209,13 +215,43 @@ Error_code merge_greedily(const Surface& surface, const Merge_settings& merge, c
         }
         if(a.zipped) // the work was done anyway
         {
-          newton_work += a.trial.newton_iterations - newton_before;
-          factorization_work += a.trial.factorizations - factorizations_before;
+          newton_work += a.log.work.iterations;
+          factorization_work += a.log.work.factorizations;
         }
       }
     }
-    state.newton_iterations += newton_work;
-    state.factorizations += factorization_work;
+    log.work.iterations += newton_work;
+    log.work.factorizations += factorization_work;
+  }
+  return OK;
+}
+
+/// Seams of the solved cut mesh in `state` (no box), whose E_d is within
+/// `bound`, zipped back while the map stays within it: each zip is judged by
+/// `relax(state, log)`; then `solve_within_bound(from_tutte_map, candidate,
+/// state, log, kept)` runs the final solve again. If that ends above the
+/// bound, the zips are undone from the last, halving their number (at most
+/// tuning::merge_undo_tries final solves); with none left, `state` is left
+/// as it was. The edges flagged in `keep` stay cut.
+template <typename Surface, typename Relax, typename Solve_within_bound>
+Error_code merge_under_bound(const Surface& surface, double bound, const std::vector<char>& keep, Relax relax,
+                             Solve_within_bound solve_within_bound, Map_state& state, Work_log& log)
+{
+  if(!(bound > 0.) || state.distortion > bound) return OK;
+  Map_state merged = state;
+  std::vector<Merge_step> steps;
+  Error_code status = merge_greedily(surface, Merge_settings(), keep, relax,
+                                     [&](double, double after) { return after <= bound; }, merged, log, steps);
+  if(status != OK) return status;
+  bool kept = false;
+  for(std::size_t k = steps.size(), tries = 0; k > 0 && tries < std::size_t(tuning::merge_undo_tries) && !kept;
+      k /= 2, ++tries)
+  {
+    Map_state candidate = state;
+    candidate.is_cut = steps[k - 1].is_cut;
+    candidate.x = steps[k - 1].x;
+    build_chart_mesh(surface, candidate.is_cut, candidate.chart, candidate.corner_uv);
+    if((status = solve_within_bound(false, std::move(candidate), state, log, kept)) != OK) return status;
   }
   return OK;
 }

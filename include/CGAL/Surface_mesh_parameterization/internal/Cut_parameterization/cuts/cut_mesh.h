@@ -1,3 +1,7 @@
+// Cutting the mesh: the initial cut (make_disks()), more cuts on a map
+// state (apply_cuts()), charts cut into overlap-free pieces
+// (cut_into_overlap_free_pieces()), the map carried over each time.
+//
 // Initial cut: makes every connected component of the cut mesh a
 // topological disk, with short cuts, so that the joint optimization can
 // start from a Tutte embedding.
@@ -16,12 +20,13 @@
 // forbidden edges that no cut graph can avoid (the cycle is non-separating,
 // since the tree reaches both its sides), so make_disks() then fails rather
 // than cut it.
-#ifndef CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
-#define CGAL_SMP_CUT_INTERNAL_INITIAL_CUT_H
+#ifndef CGAL_SMP_CUT_INTERNAL_CUT_MESH_H
+#define CGAL_SMP_CUT_INTERNAL_CUT_MESH_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cut_extraction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/cut_paths.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/Map_state.h>
 
 #include <algorithm>
 #include <cmath>
@@ -263,6 +268,46 @@ bool make_disks(const Surface& surface, std::vector<char>& is_cut, const Cut_rul
   for(int c = 0; c < result.number_of_charts; ++c)
     if(!result.is_disk(c)) return false;
   return true;
+}
+
+/// Rebuilds the chart mesh of `state` from `state.is_cut`, which holds the
+/// cuts of the current chart mesh and maybe more, and carries the UVs over:
+/// both sides of a new cut start where the uncut vertex was, so the map
+/// stays flip-free.
+template <typename Surface>
+void rebuild_cut_mesh(const Surface& surface, Map_state& state)
+{
+  const std::vector<int> old_corner_uv = state.corner_uv;
+  const UV_vector old_x = state.x;
+  build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  state.x.resize(2 * state.chart.number_of_vertices);
+  for(std::size_t c = 0; c < old_corner_uv.size(); ++c)
+    state.x.template segment<2>(2 * state.corner_uv[c]) = old_x.template segment<2>(2 * old_corner_uv[c]);
+}
+
+/// Cuts the edges of `paths`, then joins any closed slit (a path that does
+/// not reach the boundary) to the boundary by a short path, so every chart
+/// stays a topological disk (make_disks()). Rebuilds the chart mesh and
+/// carries the UVs over (rebuild_cut_mesh()). With forbidden edges, a slit
+/// may have no way to the boundary: then the paths are taken one at a time,
+/// and those whose slit cannot be opened are left out.
+template <typename Surface>
+void apply_cuts(const Surface& surface, const std::vector<Cut_path>& paths, Map_state& state)
+{
+  const std::vector<char> before = state.is_cut;
+  for(const Cut_path& path : paths)
+    for(int e : path.edges) state.is_cut[e] = 1;
+  if(!make_disks(surface, state.is_cut, state.rules))
+  {
+    state.is_cut = before;
+    for(const Cut_path& path : paths)
+    {
+      std::vector<char> trial = state.is_cut;
+      for(int e : path.edges) trial[e] = 1;
+      if(make_disks(surface, trial, state.rules)) state.is_cut.swap(trial);
+    }
+  }
+  rebuild_cut_mesh(surface, state);
 }
 
 } // namespace cut

@@ -4,7 +4,6 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/Border_barrier_term.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Joint_state.h>
 
 #include <algorithm>
 #include <array>
@@ -113,19 +112,9 @@ inline std::vector<std::size_t> self_overlapping_face_counts(const Chart_mesh& m
   return count;
 }
 
-/// Pieces of the faces flagged in `split`, each free of overlap at x: per
-/// face, its piece (0, 1, ...), or -1 for a face not flagged; `pieces` is
-/// their number. A piece grows from a seed, ring by ring across the edges of
-/// the chart mesh, and takes each face it reaches whose UV triangle overlaps
-/// none of its faces (triangles_overlap()); a face that does stops its growth
-/// there and goes to a later piece. Seeds are the faces farthest from the
-/// border of the flagged faces (in rings), so that the first pieces are the
-/// largest. The result depends on the mesh and x only. Small pieces stay:
-/// a pass that joined each piece, from the smallest up, to a neighbor it
-/// does not overlap joined none of the 145 pieces of CGAL's cheese.off
-/// (where a piece meets an earlier one, its faces there overlapped it).
-inline std::vector<int> overlap_free_pieces(const Chart_mesh& mesh, const UV_vector& x, const std::vector<char>& split,
-                                            int& pieces)
+/// Per face of `mesh`, its neighbors across the edges of the chart mesh
+/// that are flagged in `split` (-1: none).
+inline std::vector<std::array<int, 3>> flagged_neighbors(const Chart_mesh& mesh, const std::vector<char>& split)
 {
   const std::size_t nf = mesh.number_of_faces();
   // neighbors across the edges of the chart mesh
@@ -141,6 +130,15 @@ inline std::vector<int> overlap_free_pieces(const Chart_mesh& mesh, const UV_vec
       const auto it = face_of_edge.find(directed_edge_key(mesh.faces[f][(k + 1) % 3], mesh.faces[f][k]));
       if(it != face_of_edge.end() && split[std::size_t(it->second)]) neighbor[f][k] = it->second;
     }
+  return neighbor;
+}
+
+/// The faces flagged in `split`, deepest first (rings from the border of
+/// the flagged faces; equal depths by index).
+inline std::vector<int> seeds_deepest_first(const std::vector<std::array<int, 3>>& neighbor,
+                                            const std::vector<char>& split)
+{
+  const std::size_t nf = neighbor.size();
   // depth: rings from the border of the flagged faces
   std::vector<int> depth(nf, -1);
   std::deque<int> queue;
@@ -165,6 +163,28 @@ inline std::vector<int> overlap_free_pieces(const Chart_mesh& mesh, const UV_vec
   for(std::size_t f = 0; f < nf; ++f)
     if(split[f]) seeds.push_back(int(f));
   std::stable_sort(seeds.begin(), seeds.end(), [&](int a, int b) { return depth[std::size_t(a)] > depth[std::size_t(b)]; });
+
+  return seeds;
+}
+
+/// Pieces of the faces flagged in `split`, each free of overlap at x: per
+/// face, its piece (0, 1, ...), or -1 for a face not flagged; `pieces` is
+/// their number. A piece grows from a seed, ring by ring across the edges of
+/// the chart mesh, and takes each face it reaches whose UV triangle overlaps
+/// none of its faces (triangles_overlap()); a face that does stops its growth
+/// there and goes to a later piece. Seeds are the faces farthest from the
+/// border of the flagged faces (in rings), so that the first pieces are the
+/// largest. The result depends on the mesh and x only. Small pieces stay:
+/// a pass that joined each piece, from the smallest up, to a neighbor it
+/// does not overlap joined none of the 145 pieces of CGAL's cheese.off
+/// (where a piece meets an earlier one, its faces there overlapped it).
+inline std::vector<int> overlap_free_pieces(const Chart_mesh& mesh, const UV_vector& x, const std::vector<char>& split,
+                                            int& pieces)
+{
+  const std::size_t nf = mesh.number_of_faces();
+  const std::vector<std::array<int, 3>> neighbor = flagged_neighbors(mesh, split);
+  const std::vector<int> seeds = seeds_deepest_first(neighbor, split);
+  std::deque<int> queue;
 
   // a grid of the faces taken, about two mean UV edges per cell
   const double edge = mean_uv_edge_length(mesh, x, split);
@@ -247,37 +267,6 @@ inline std::vector<int> overlap_free_pieces(const Chart_mesh& mesh, const UV_vec
     }
   }
   return piece;
-}
-
-/// Cuts the charts of `state` flagged in `charts` (ids of chart_of_faces())
-/// into pieces free of overlap (overlap_free_pieces()), then makes every
-/// chart a disk (make_disks()) and carries the map over
-/// (rebuild_cut_mesh()): each piece starts from its part of the map. Returns
-/// false, with `state` untouched, if the pieces would cut a forbidden edge.
-template <typename Surface>
-bool cut_into_overlap_free_pieces(const Surface& surface, const std::vector<char>& charts, Joint_state& state)
-{
-  int number_of_charts = 0;
-  const std::vector<int> chart = chart_of_faces(state.chart, number_of_charts);
-  std::vector<char> split(state.chart.number_of_faces(), 0);
-  for(std::size_t f = 0; f < split.size(); ++f) split[f] = charts[std::size_t(chart[f])];
-  int pieces = 0;
-  const std::vector<int> piece = overlap_free_pieces(state.chart, state.x, split, pieces);
-  std::vector<char> is_cut = state.is_cut;
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-  {
-    const int twin = surface.twin[std::size_t(fe)];
-    if(twin < 0) continue;
-    const std::size_t f = std::size_t(fe / 3), g = std::size_t(twin / 3);
-    if(!split[f] || !split[g] || piece[f] == piece[g]) continue;
-    const int e = surface.edge_of[std::size_t(fe)];
-    if(state.rules.is_forbidden(e)) return false;
-    is_cut[std::size_t(e)] = 1;
-  }
-  if(!make_disks(surface, is_cut, state.rules)) return false;
-  state.is_cut.swap(is_cut);
-  rebuild_cut_mesh(surface, state);
-  return true;
 }
 
 } // namespace cut

@@ -247,6 +247,132 @@ inline bool pack_boxes(const std::vector<Vector2>& size, const std::vector<int>&
 
 } // namespace packing
 
+namespace packing {
+
+/// Each chart of `mesh` turned to its best rectangle, with its lower corner
+/// at the origin: `local` (per vertex) and `size` (per chart); the vertices
+/// of chart c are vertices[first[c] .. first[c + 1]), by increasing index.
+/// False if a UV is not finite.
+inline bool chart_rectangles(const Chart_mesh& mesh, const UV_vector& x, const std::vector<int>& chart_of_face, int n,
+                             std::vector<int>& chart_of_vertex, std::vector<int>& first, std::vector<int>& vertices,
+                             std::vector<Vector2>& local, std::vector<Vector2>& size)
+{
+  // vertices of each chart, by increasing index
+  chart_of_vertex.assign(mesh.number_of_vertices, -1);
+  first.assign(n + 1, 0);
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    for(int v : mesh.faces[f])
+    {
+      if(!x.segment<2>(2 * v).allFinite()) return false; // nothing sensible to pack
+      chart_of_vertex[v] = chart_of_face[f];
+    }
+  for(int c : chart_of_vertex) if(c >= 0) ++first[c + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  vertices.assign(first[n], 0);
+  std::vector<int> cursor(first.begin(), first.end() - 1);
+  for(int v = 0; v < mesh.number_of_vertices; ++v)
+    if(chart_of_vertex[v] >= 0) vertices[cursor[chart_of_vertex[v]]++] = v;
+
+  // turn each chart to its best rectangle, with its lower corner at the origin
+  local.assign(mesh.number_of_vertices, Vector2::Zero());
+  size.assign(n, Vector2::Zero());
+  for(int c = 0; c < n; ++c)
+  {
+    const Vector2 origin = x.segment<2>(2 * vertices[first[c]]);
+    std::vector<Vector2> points;
+    for(int i = first[c]; i < first[c + 1]; ++i) points.push_back(x.segment<2>(2 * vertices[i]) - origin);
+    const double angle = packing::best_angle(packing::convex_hull(points), n == 1);
+    const double co = std::cos(angle), si = std::sin(angle);
+    Vector2 low = Vector2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for(int i = first[c]; i < first[c + 1]; ++i)
+    {
+      const Vector2& p = points[i - first[c]];
+      Vector2& q = local[vertices[i]];
+      q = Vector2(co * p.x() + si * p.y(), -si * p.x() + co * p.y()); // rotation by -angle
+      low = low.cwiseMin(q);
+      high = high.cwiseMax(q);
+    }
+    for(int i = first[c]; i < first[c + 1]; ++i) local[vertices[i]] -= low;
+    size[c] = high - low;
+  }
+  return true;
+}
+
+/// The largest scale at which the rectangles of `size` (made at least a
+/// tiny fraction of the largest) pack into the unit square with the padding
+/// of `settings` (lowered where even points would not fit): `pad`, `room`
+/// and the placements `best` of that scale.
+inline double largest_packing_scale(std::vector<Vector2>& size, const Packing_settings& settings, double& pad,
+                                    double& room, std::vector<Placement>& best)
+{
+  const int n = int(size.size());
+  double largest = 0.;
+  for(const Vector2& s : size) largest = (std::max)(largest, s.maxCoeff());
+  const double tiny = largest > 0. ? 1e-9 * largest : 1.;
+  double max_side = 0., area = 0., perimeter = 0.;
+  for(Vector2& s : size)
+  {
+    s = s.cwiseMax(Vector2::Constant(tiny));
+    max_side = (std::max)(max_side, s.maxCoeff());
+    area += s.x() * s.y();
+    perimeter += s.x() + s.y();
+  }
+
+  // In the unit square, box i is (scale * size + pad) and the boxes must fit in
+  // [0, 1 - pad]²; the chart sits at pad from its box's lower corner. A k × k
+  // grid of cells 'cell' always fits when pad < cell; else lower the padding.
+  const int k = int(std::ceil(std::sqrt(double(n))));
+  // never 0: with padding 0 two charts still do not touch (their boxes at least
+  // min_gap apart, a thousandth of a texel at 1024 texels)
+  const double min_gap = 1e-6;
+  pad = std::isfinite(settings.padding) && settings.texture_size > 0
+                 ? (std::max)(min_gap, settings.padding / settings.texture_size) : min_gap;
+  if(pad * (k + 1) >= 1.) pad = 0.5 / (k + 1);
+  room = 1. - pad;
+  const double cell = room / k;
+  double low = (cell - pad) / max_side * (1. - 1e-12);
+  // largest scale allowed by the longest side and by the total box area
+  const double by_area = (-pad * perimeter + std::sqrt(pad * pad * perimeter * perimeter
+                           - 4. * area * (n * pad * pad - room * room))) / (2. * area);
+  double high = (std::max)(low, (std::min)((room - pad) / max_side, by_area) * (1. - 1e-12));
+
+  // largest first, by longer side and by area: a scale packs if either order does
+  std::vector<int> by_side(n);
+  std::iota(by_side.begin(), by_side.end(), 0);
+  std::vector<int> by_size = by_side;
+  auto larger = [&](double a0, double a1, double b0, double b1, int a, int b) {
+    return a0 != b0 ? a0 > b0 : (a1 != b1 ? a1 > b1 : a < b); };
+  std::sort(by_side.begin(), by_side.end(), [&](int a, int b) {
+    return larger(size[a].maxCoeff(), size[a].minCoeff(), size[b].maxCoeff(), size[b].minCoeff(), a, b); });
+  std::sort(by_size.begin(), by_size.end(), [&](int a, int b) {
+    return larger(size[a].prod(), size[a].maxCoeff(), size[b].prod(), size[b].maxCoeff(), a, b); });
+  best.assign(n, Placement());
+  std::vector<Placement> trial;
+  for(int j = 0; j < n; ++j) // the grid, always valid at scale 'low'
+    best[j] = {cell * (j % k), cell * (j / k), false};
+  // largest scale that packs: step down from the bound by 5% until one
+  // packs, then bisect (the grid at 'low' is the fallback)
+  auto attempt = [&](double scale) {
+    if(!pack_boxes(size, by_side, scale, pad, room, trial)
+       && !pack_boxes(size, by_size, scale, pad, room, trial)) return false;
+    best.swap(trial);
+    low = scale;
+    return true; };
+  for(double s = high; s > low; s *= 0.95)
+  {
+    if(attempt(s)) break;
+    high = s;
+  }
+  for(int it = 0; it < 60 && high - low > 2e-4 * high; ++it)
+  {
+    const double mid = high < 2. * low ? 0.5 * (low + high) : std::sqrt(low * high);
+    if(!attempt(mid)) high = mid;
+  }
+  return low;
+}
+
+} // namespace packing
+
 /// Packs the charts of `mesh` (its connected components) into a square.
 ///
 /// Guarantees, for the UV vertices of the faces (other entries of `x` are
@@ -270,103 +396,13 @@ inline Packing_result pack_charts(const Chart_mesh& mesh, UV_vector& x,
   int n = 0;
   const std::vector<int> chart_of_face = chart_of_faces(mesh, n);
   if(n == 0) return result;
-
-  // vertices of each chart, by increasing index
-  std::vector<int> chart_of_vertex(mesh.number_of_vertices, -1), first(n + 1, 0);
-  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
-    for(int v : mesh.faces[f])
-    {
-      if(!x.segment<2>(2 * v).allFinite()) return result; // nothing sensible to pack
-      chart_of_vertex[v] = chart_of_face[f];
-    }
-  for(int c : chart_of_vertex) if(c >= 0) ++first[c + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<int> vertices(first[n]), cursor(first.begin(), first.end() - 1);
-  for(int v = 0; v < mesh.number_of_vertices; ++v)
-    if(chart_of_vertex[v] >= 0) vertices[cursor[chart_of_vertex[v]]++] = v;
-
-  // turn each chart to its best rectangle, with its lower corner at the origin
-  std::vector<Vector2> local(mesh.number_of_vertices), size(n);
-  double largest = 0.;
-  for(int c = 0; c < n; ++c)
-  {
-    const Vector2 origin = x.segment<2>(2 * vertices[first[c]]);
-    std::vector<Vector2> points;
-    for(int i = first[c]; i < first[c + 1]; ++i) points.push_back(x.segment<2>(2 * vertices[i]) - origin);
-    const double angle = packing::best_angle(packing::convex_hull(points), n == 1);
-    const double co = std::cos(angle), si = std::sin(angle);
-    Vector2 low = Vector2::Constant(std::numeric_limits<double>::infinity()), high = -low;
-    for(int i = first[c]; i < first[c + 1]; ++i)
-    {
-      const Vector2& p = points[i - first[c]];
-      Vector2& q = local[vertices[i]];
-      q = Vector2(co * p.x() + si * p.y(), -si * p.x() + co * p.y()); // rotation by -angle
-      low = low.cwiseMin(q);
-      high = high.cwiseMax(q);
-    }
-    for(int i = first[c]; i < first[c + 1]; ++i) local[vertices[i]] -= low;
-    size[c] = high - low;
-    largest = (std::max)(largest, size[c].maxCoeff());
-  }
-  const double tiny = largest > 0. ? 1e-9 * largest : 1.;
-  double max_side = 0., area = 0., perimeter = 0.;
-  for(Vector2& s : size)
-  {
-    s = s.cwiseMax(Vector2::Constant(tiny));
-    max_side = (std::max)(max_side, s.maxCoeff());
-    area += s.x() * s.y();
-    perimeter += s.x() + s.y();
-  }
-
-  // In the unit square, box i is (scale * size + pad) and the boxes must fit in
-  // [0, 1 - pad]²; the chart sits at pad from its box's lower corner. A k × k
-  // grid of cells 'cell' always fits when pad < cell; else lower the padding.
-  const int k = int(std::ceil(std::sqrt(double(n))));
-  // never 0: with padding 0 two charts still do not touch (their boxes at least
-  // min_gap apart, a thousandth of a texel at 1024 texels)
-  const double min_gap = 1e-6;
-  double pad = std::isfinite(settings.padding) && settings.texture_size > 0
-                 ? (std::max)(min_gap, settings.padding / settings.texture_size) : min_gap;
-  if(pad * (k + 1) >= 1.) pad = 0.5 / (k + 1);
-  const double room = 1. - pad, cell = room / k;
-  double low = (cell - pad) / max_side * (1. - 1e-12);
-  // largest scale allowed by the longest side and by the total box area
-  const double by_area = (-pad * perimeter + std::sqrt(pad * pad * perimeter * perimeter
-                           - 4. * area * (n * pad * pad - room * room))) / (2. * area);
-  double high = (std::max)(low, (std::min)((room - pad) / max_side, by_area) * (1. - 1e-12));
-
-  // largest first, by longer side and by area: a scale packs if either order does
-  std::vector<int> by_side(n);
-  std::iota(by_side.begin(), by_side.end(), 0);
-  std::vector<int> by_size = by_side;
-  auto larger = [&](double a0, double a1, double b0, double b1, int a, int b) {
-    return a0 != b0 ? a0 > b0 : (a1 != b1 ? a1 > b1 : a < b); };
-  std::sort(by_side.begin(), by_side.end(), [&](int a, int b) {
-    return larger(size[a].maxCoeff(), size[a].minCoeff(), size[b].maxCoeff(), size[b].minCoeff(), a, b); });
-  std::sort(by_size.begin(), by_size.end(), [&](int a, int b) {
-    return larger(size[a].prod(), size[a].maxCoeff(), size[b].prod(), size[b].maxCoeff(), a, b); });
-  std::vector<packing::Placement> best(n), trial;
-  for(int j = 0; j < n; ++j) // the grid, always valid at scale 'low'
-    best[j] = {cell * (j % k), cell * (j / k), false};
-  // largest scale that packs: step down from the bound by 5% until one
-  // packs, then bisect (the grid at 'low' is the fallback)
-  auto attempt = [&](double scale) {
-    if(!packing::pack_boxes(size, by_side, scale, pad, room, trial)
-       && !packing::pack_boxes(size, by_size, scale, pad, room, trial)) return false;
-    best.swap(trial);
-    low = scale;
-    return true; };
-  for(double s = high; s > low; s *= 0.95)
-  {
-    if(attempt(s)) break;
-    high = s;
-  }
-  for(int it = 0; it < 60 && high - low > 2e-4 * high; ++it)
-  {
-    const double mid = high < 2. * low ? 0.5 * (low + high) : std::sqrt(low * high);
-    if(!attempt(mid)) high = mid;
-  }
-  const double scale = low;
+  std::vector<int> chart_of_vertex, first, vertices;
+  std::vector<Vector2> local, size;
+  if(!packing::chart_rectangles(mesh, x, chart_of_face, n, chart_of_vertex, first, vertices, local, size))
+    return result;
+  double pad = 0., room = 0.;
+  std::vector<packing::Placement> best;
+  const double scale = packing::largest_packing_scale(size, settings, pad, room, best);
 
   // center the layout, then place each chart at pad inside its box
   Vector2 used = Vector2::Zero();
@@ -396,7 +432,6 @@ inline Packing_result pack_charts(const Chart_mesh& mesh, UV_vector& x,
   result.coverage = uv_area / (unit * unit);
   return result;
 }
-
 } // namespace cut
 } // namespace internal
 } // namespace Surface_mesh_parameterization

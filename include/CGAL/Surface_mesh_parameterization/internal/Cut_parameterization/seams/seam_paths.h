@@ -4,7 +4,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_PATHS_H
 #define CGAL_SMP_CUT_INTERNAL_SEAM_PATHS_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Cut_rules.h>
 
 #include <algorithm>
 #include <array>

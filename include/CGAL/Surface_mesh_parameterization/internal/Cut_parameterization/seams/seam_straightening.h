@@ -18,11 +18,15 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 #define CGAL_SMP_CUT_INTERNAL_SEAM_STRAIGHTENING_H
 
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Cut_rules.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seam_paths.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Cut_rules.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/cut_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/Map_state.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_paths.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <array>
 #include <vector>
@@ -157,6 +161,42 @@ int straighten_seams(const Surface& surface, const Cut_rules& rules, const std::
     ++rerouted;
   }
   return rerouted;
+}
+
+/// `rerouted` becomes the cut mesh of the seams of `state` rerouted by
+/// straighten_seams() (`keep`, `rings`, `slide`: as there), with a Tutte map;
+/// false if no path was rerouted or the Tutte map failed.
+template <typename Surface>
+bool rerouted_cut_mesh(const Surface& surface, const Map_state& state, const std::vector<char>& keep, int rings,
+                       bool slide, Map_state& rerouted)
+{
+  rerouted.is_cut = state.is_cut;
+  if(straighten_seams(surface, state.rules, keep, rings, rerouted.is_cut, slide) == 0) return false;
+  build_chart_mesh(surface, rerouted.is_cut, rerouted.chart, rerouted.corner_uv);
+  return disk_charts_embedding(rerouted.chart, rerouted.x) == Embedding_status::OK;
+}
+
+/// Seams of the solved cut mesh in `state`, whose E_d is within `bound`,
+/// rerouted along shorter paths within `rings` rings, the map solved again
+/// from a Tutte map by `solve_within_bound(from_tutte_map, candidate, state,
+/// log, kept)`, which keeps it if its E_d is within the bound. Then once
+/// more with the ends of the seams on the mesh border free to slide along
+/// it: a second step, so that a slide that breaks the bound cannot undo the
+/// reroutes.
+template <typename Surface, typename Solve_within_bound>
+Error_code straighten_under_bound(const Surface& surface, double bound, int rings, const std::vector<char>& keep,
+                                  Solve_within_bound solve_within_bound, Map_state& state, Work_log& log)
+{
+  if(rings <= 0 || !(bound > 0.) || state.distortion > bound) return OK;
+  for(bool slide : {false, true})
+  {
+    Map_state candidate = state;
+    if(!rerouted_cut_mesh(surface, state, keep, rings, slide, candidate)) continue;
+    bool kept = false;
+    const Error_code status = solve_within_bound(true, std::move(candidate), state, log, kept);
+    if(status != OK) return status;
+  }
+  return OK;
 }
 
 } // namespace cut

@@ -7,9 +7,9 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_MULTIRESOLUTION_H
 #define CGAL_SMP_CUT_INTERNAL_MULTIRESOLUTION_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/Edge_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Edge_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/initial_cut.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/cut_mesh.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
