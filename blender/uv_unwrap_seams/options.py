@@ -21,8 +21,9 @@ def _load():
 ROWS = _load()
 BY_KEYWORD = {row["python"]: row for row in ROWS}
 
-# starting values of the properties whose row has no default (the library's rule)
-_SUGGESTED = {"max_distortion": 4.2, "box_aspect": 1.0, "box_stiffness": 5.0, "box_distortion_budget": 0.045}
+# starting value of the distortion bound, which is off by default (the others
+# start at what the library uses when they are not given: "unset_value")
+_SUGGESTED = {"max_distortion": 4.2}
 _INT_MAX = 2 ** 31 - 1
 
 
@@ -48,7 +49,7 @@ def properties():
         name, kind, label = row["blender"], row["kind"], row["blender"].replace("_", " ").capitalize()
         help_text = row["help"]
         if kind in ("real", "ratio"):
-            default = row["default"] if row["default"] is not None else _SUGGESTED.get(name, row["min"])
+            default = row["default"] if row["default"] is not None else _SUGGESTED.get(name, row["unset_value"])
             low = row["min"] if not row["min_open"] else min(default, 1e-3) * 1e-3
             high = row["max"] if row["max"] is not None else 1e9
             props[name] = FloatProperty(name=label, description=help_text, default=default, min=low, max=high,

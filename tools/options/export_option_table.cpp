@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv)
 {
@@ -19,6 +20,7 @@ int main(int argc, char** argv)
     return 2;
   }
   using cut_options::Kind;
+  namespace SMP = CGAL::Surface_mesh_parameterization;
   const char* kinds[] = {"real", "count", "flag", "inverted_flag", "ratio", "choice"};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for(const cut_options::Option_spec& spec : cut_options::option_table())
@@ -35,6 +37,14 @@ int main(int argc, char** argv)
     else if(spec.kind == Kind::FLAG || spec.kind == Kind::INVERTED_FLAG) row["default"] = *d != 0.;
     else if(spec.kind == Kind::COUNT || spec.kind == Kind::CHOICE) row["default"] = static_cast<long long>(*d);
     else row["default"] = *d;
+    // what the library uses when the option is not given (its rule, evaluated here, not restated)
+    const SMP::Cut_parameterization_options defaults;
+    const std::string name = spec.name;
+    if(name == "bounding_box_aspect_ratio") row["unset_value"] = defaults.bounding_box_aspect_ratio_value();
+    else if(name == "bounding_box_stiffness") row["unset_value"] = defaults.bounding_box_stiffness_value();
+    else if(name == "bounding_box_distortion_budget")
+      row["unset_value"] = defaults.bounding_box_distortion_budget_value();
+    else row["unset_value"] = row["default"];
     row["min"] = spec.min;
     row["min_open"] = spec.min_open;
     row["max"] = std::isfinite(spec.max) ? nlohmann::ordered_json(spec.max) : nlohmann::ordered_json();

@@ -77,7 +77,8 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
   X(inner_solver, CHOICE, "--inner-solver", "inner_solver", "inner_solver", 0., false, 1., "newton|proxy-quasi-newton", \
     "Method",                                                                                                        \
     "inner solver of the UV minimizations: newton (a factorization per iteration) or proxy-quasi-newton (the "     \
-    "Hessian factorized at a few iterates, L-BFGS between them: fewer factorizations, more iterations)")             \
+    "Hessian factorized at a few iterates, L-BFGS steps between them: more iterations, most without a "             \
+    "factorization)")                                                                                                \
   X(reject_degenerate_faces, FLAG, "--reject-degenerate-faces", "reject_degenerate_faces", "reject_degenerate_faces", \
     0., false, 1., "", "Method", "fail with ERROR_DEGENERATE_FACE on degenerate faces instead of clamping them")   \
   X(global_injectivity, INVERTED_FLAG, "--allow-overlaps", "allow_overlaps", "allow_overlaps", 0., false, 1., "",   \
