@@ -57,48 +57,14 @@ inline bool nearly_equal(double a, double b, double rel = 1e-6)
   return std::abs(a - b) <= rel * std::max(1., std::max(std::abs(a), std::abs(b)));
 }
 
-/// The library's defaults, whose values the options replace.
-struct Library_defaults
-{
-  double lambda, distortion_bound, bounding_box_aspect_ratio, bounding_box_stiffness, bounding_box_distortion_budget;
-  int passes, multiresolution_faces;
-};
-inline const Library_defaults& library_defaults()
-{
-  static const SMP::Cut_parameterization_options o;
-  static const Library_defaults defaults{o.lambda, o.distortion_bound, o.bounding_box_aspect_ratio_value(),
-                                         o.bounding_box_stiffness_value(), o.bounding_box_distortion_budget_value(),
-                                         o.number_of_passes, o.multiresolution_faces};
-  return defaults;
-}
-
-/// Stiffness of the box the options ask for (--box W:H asks for a tight box,
-/// as bounding_box_aspect_ratio does in the library).
-inline double box_stiffness(const Options& opt)
-{
-  return opt.box_stiffness.value_or(opt.box ? SMP::tight_bounding_box_stiffness
-                                            : library_defaults().bounding_box_stiffness);
-}
-
-/// The named parameters of --lambda, --passes, --box, --box-stiffness,
-/// --multiresolution-faces, --allow-overlaps and --inner-solver (the library's default for
-/// those not given), with `distortion_bound` (0: none).
+/// The options given (the library's rules for the others: a box asked for
+/// is tight and kept whatever it costs), with `distortion_bound` (0: none),
+/// passed whole to the library.
 inline auto method_parameters(const Options& opt, double distortion_bound)
 {
-  namespace P = SMP::parameters;
-  const auto& defaults = library_defaults();
-  // a box asked for is kept whatever it costs, as in the library
-  const double budget = opt.box || opt.box_stiffness ? std::numeric_limits<double>::infinity()
-                                                     : defaults.bounding_box_distortion_budget;
-  return P::lambda(opt.lambda.value_or(defaults.lambda),
-         P::number_of_passes(opt.passes.value_or(defaults.passes),
-         P::bounding_box_aspect_ratio(opt.box.value_or(defaults.bounding_box_aspect_ratio),
-         P::bounding_box_stiffness(box_stiffness(opt),
-         P::bounding_box_distortion_budget(budget,
-         P::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces),
-         P::global_injectivity(!opt.allow_overlaps,
-         P::inner_solver(opt.inner_solver,
-         P::distortion_bound(distortion_bound)))))))));
+  SMP::Cut_parameterization_options o = opt.method;
+  o.distortion_bound = distortion_bound;
+  return SMP::parameters::cut_parameterization_options(o);
 }
 
 /// "lambda X, passes N, box aspect ratio R stiffness S[, overlaps allowed]; time:
@@ -106,11 +72,12 @@ inline auto method_parameters(const Options& opt, double distortion_bound)
 inline std::string parameters_text(const Options& opt)
 {
   std::ostringstream os;
-  os << "lambda " << (opt.lambda ? fixed(*opt.lambda, 3) : std::string("default")) << ", passes "
-     << (opt.passes ? std::to_string(*opt.passes) : std::string("default"))
-     << ", box aspect ratio " << fixed(opt.box.value_or(library_defaults().bounding_box_aspect_ratio), 3)
-     << " stiffness " << fixed(box_stiffness(opt), 1) << (opt.allow_overlaps ? ", overlaps allowed" : "")
-     << (opt.inner_solver == SMP::Inner_solver::NEWTON ? "" : ", inner solver proxy quasi-Newton")
+  const SMP::Cut_parameterization_options& o = opt.method;
+  os << "lambda " << (opt.given_option("lambda") ? fixed(o.lambda, 3) : std::string("default")) << ", passes "
+     << (opt.given_option("number_of_passes") ? std::to_string(o.number_of_passes) : std::string("default"))
+     << ", box aspect ratio " << fixed(o.bounding_box_aspect_ratio_value(), 3)
+     << " stiffness " << fixed(o.bounding_box_stiffness_value(), 1) << (o.global_injectivity ? "" : ", overlaps allowed")
+     << (o.inner_solver == SMP::Inner_solver::NEWTON ? "" : ", inner solver proxy quasi-Newton")
      << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "");
   return os.str();
 }

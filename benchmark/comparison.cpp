@@ -77,7 +77,7 @@ int run_comparison(const Options& opt)
     return 2;
   }
 
-  const auto np = method_parameters(opt, library_defaults().distortion_bound);
+  const auto np = method_parameters(opt, SMP::Cut_parameterization_options().distortion_bound); // no bound
   std::vector<Row> rows;
   for(const auto& m : meshes)
   {

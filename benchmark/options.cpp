@@ -1,11 +1,11 @@
 #include "options.h"
 
+#include "options/cli_options.h"
 #include "text_parsing.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cmath>
-#include <map>
 #include <iostream>
 #include <sstream>
 
@@ -21,18 +21,6 @@ fs::path project_root()
 }
 
 namespace {
-
-// "W:H", both positive numbers: the aspect ratio W / H.
-bool parse_aspect_ratio(const std::string& text, double& ratio)
-{
-  const std::size_t colon = text.find(':');
-  double w = 0., h = 0.;
-  if(colon == std::string::npos || !parse_double(text.substr(0, colon), w) ||
-     !parse_double(text.substr(colon + 1), h) || !(w > 0.) || !(h > 0.))
-    return false;
-  ratio = w / h;
-  return std::isfinite(ratio) && ratio > 0.;
-}
 
 const char* const description =
   "Runs cut_and_parameterize() on a list of meshes and compares with the reference\n"
@@ -83,41 +71,13 @@ int parse_options(int argc, char** argv, Options& opt)
                    "optcuts_equal_distortion.csv; default ../shared/reference\n"
                    "relative to the project root")
       ->type_name("DIR")->group(comparison));
-  comparisons.push_back(app.add_option("--lambda", opt.lambda, "seam cost lambda (library default if not given)")
-                          ->type_name("X")->check(positive)->group(comparison));
-  comparisons.push_back(app.add_option("--passes", opt.passes, "number of passes (library default if not given)")
-                          ->type_name("N")->check(CLI::NonNegativeNumber)->group(comparison));
-  comparisons.push_back(
-    app.add_option_function<std::string>("--box", [&opt](const std::string& v) {
-        double ratio = 1.;
-        parse_aspect_ratio(v, ratio);
-        opt.box = ratio;
-      }, "tight bounding box of aspect ratio W/H (default: the library's\ngentle square)")
-      ->type_name("W:H")
-      ->check(CLI::Validator([](std::string& v) {
-          double ratio;
-          return parse_aspect_ratio(v, ratio) ? std::string() : "expected W:H, two positive numbers, got '" + v + "'";
-        }, ""))
-      ->group(comparison));
-  comparisons.push_back(
-    app.add_option("--box-stiffness", opt.box_stiffness,
-                   "how hard the box pulls, >= 0 (0: no box; library default if not given)")
-      ->type_name("S")->check(CLI::NonNegativeNumber)->group(comparison));
-  app.add_option("--multiresolution-faces", opt.multiresolution_faces,
-                 "cuts decided on a copy simplified to N faces for meshes\n"
-                 "of more than 2N (0: full resolution; library default if not given)")
-    ->type_name("N")->check(CLI::NonNegativeNumber);
-  app.add_option("--inner-solver", opt.inner_solver,
-                 "inner solver of the UV minimizations: newton (default) or quasi-newton\n"
-                 "(the Hessian factorized at a few iterates, L-BFGS between them)")
-    ->transform(CLI::CheckedTransformer(std::map<std::string, CGAL::Surface_mesh_parameterization::Inner_solver>{
-        {"newton", CGAL::Surface_mesh_parameterization::Inner_solver::NEWTON},
-        {"quasi-newton", CGAL::Surface_mesh_parameterization::Inner_solver::PROXY_QUASI_NEWTON}}))
-    ->type_name("NAME");
-  comparisons.push_back(
-    app.add_flag("--allow-overlaps", opt.allow_overlaps,
-                 "global_injectivity(false): no border barrier (with --box-stiffness 0, the\n"
-                 "map as it was before the atlas work, only packed)")->group(comparison));
+  // the method's options: rows of the option table, those of the comparisons in their group
+  for(CLI::Option* o : cut_options::add_cli_options(app, opt.given,
+                                                    {"lambda", "number_of_passes", "bounding_box_aspect_ratio",
+                                                     "bounding_box_stiffness", "global_injectivity"},
+                                                    comparison))
+    comparisons.push_back(o);
+  cut_options::add_cli_options(app, opt.given, {"multiresolution_faces", "inner_solver"});
   app.add_option("--repeat", opt.repeat,
                  "runs per mesh; the time reported is their median (default 1;\n"
                  "with --scaling 3, for meshes up to " + std::to_string(SCALING_REPEAT_MAX_FACES) + " faces)")
@@ -189,8 +149,11 @@ int parse_options(int argc, char** argv, Options& opt)
   // the default baseline holds the library's defaults: with other method
   // parameters, no comparison unless a baseline is named
   // (the frontier covers other seam costs λ: only the other parameters clear it)
-  const bool other_method = opt.passes || opt.box || opt.box_stiffness || opt.allow_overlaps || opt.multiresolution_faces;
-  if((other_method || opt.lambda) && app.count("--baseline") == 0) opt.baseline_file.clear();
+  cut_options::apply(opt.given, opt.method);
+  const bool other_method = opt.given_option("number_of_passes") || opt.given_option("bounding_box_aspect_ratio") ||
+                            opt.given_option("bounding_box_stiffness") || opt.given_option("global_injectivity") ||
+                            opt.given_option("multiresolution_faces");
+  if((other_method || opt.given_option("lambda")) && app.count("--baseline") == 0) opt.baseline_file.clear();
   if(other_method && app.count("--baseline-frontier") == 0) opt.frontier_file.clear();
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
   // an option of another mode than the one run

@@ -4,7 +4,7 @@
 #ifndef CUT_PARAM_BENCHMARK_OPTIONS_H
 #define CUT_PARAM_BENCHMARK_OPTIONS_H
 
-#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include "options/option_table.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -37,14 +37,18 @@ struct Options
   fs::path mesh_dir;
   fs::path reference_dir;
   std::vector<std::string> meshes;     // empty: the default list
-  std::optional<double> lambda;
-  std::optional<int> passes;
-  std::optional<double> box;           // bounding_box_aspect_ratio (empty: the library's default box)
-  std::optional<double> box_stiffness; // bounding_box_stiffness (empty: the library's default)
-  bool allow_overlaps = false;         // global_injectivity(false)
-  std::optional<int> multiresolution_faces; // multiresolution_faces (empty: the library's default)
-  // inner_solver: a solver, not a method option (the baseline comparisons stay)
-  CGAL::Surface_mesh_parameterization::Inner_solver inner_solver = CGAL::Surface_mesh_parameterization::Inner_solver::NEWTON;
+  // the method's options, flags from the option table (tools/options/option_table.h):
+  // --lambda, --passes, --box, --box-stiffness, --allow-overlaps,
+  // --multiresolution-faces, --inner-solver; one slot per row (nullopt: not given)
+  cut_options::Given_options given;
+  // them as the library's options: those not given left as the library leaves them
+  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method;
+  /// The option of this field of Cut_parameterization_options was given.
+  bool given_option(const char* name) const
+  {
+    const std::size_t i = cut_options::option_index(name);
+    return i < given.size() && given[i].has_value();
+  }
   std::optional<int> repeat;           // empty: the mode's default (repeat())
   std::string csv_file;
   bool quick = false;

@@ -172,10 +172,9 @@ std::string measure_run(const Scaling_mesh& m, const Options& opt)
     out.faces = mesh.number_of_faces();
     auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:benchmark_seam", false).first;
     auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:benchmark_uv").first;
-    const SMP::Cut_parameterization_options defaults;
-    const SMP::Cut_and_parameterize_result r = SMP::cut_and_parameterize(
-      mesh, seam, uv,
-      SMP::parameters::multiresolution_faces(opt.multiresolution_faces.value_or(defaults.multiresolution_faces)));
+    // the library's defaults but for --multiresolution-faces and --inner-solver (the only method options here)
+    const SMP::Cut_and_parameterize_result r =
+      SMP::cut_and_parameterize(mesh, seam, uv, SMP::parameters::cut_parameterization_options(opt.method));
     out.error = int(r.error);
     out.timings = r.timings;
     out.newton_iterations = r.newton_iterations;
@@ -411,7 +410,7 @@ int run_scaling(const Options& opt)
             << " hardware threads (std::thread::hardware_concurrency); TBB " << tbb_name() << "; sparse Cholesky: "
             << cholesky_name() << "\n"
             << "  parameters: cut_and_parameterize() defaults"
-            << (opt.multiresolution_faces ? ", multiresolution_faces " + std::to_string(*opt.multiresolution_faces) : std::string())
+            << (opt.given_option("multiresolution_faces") ? ", multiresolution_faces " + std::to_string(opt.method.multiresolution_faces) : std::string())
             << "\n"
             << "  runs:       each in a child process, killed after " << seconds_text(opt.time_limit)
             << " s; each figure the median of " << repeat << " run" << (repeat > 1 ? "s" : "") << " up to "

@@ -1,15 +1,15 @@
 // The arguments of unwrap() checked and converted (python/uv_unwrap_module.cpp):
 // numpy arrays of the right shape and dtype (TypeError, ValueError,
 // IndexError naming the array, the row and the value otherwise), and the
-// keyword options turned into uv_unwrap's options (tools/uv_unwrap_options.h),
-// as its command line sets them.
+// keyword options, one per row of the option table (tools/options/option_table.h),
+// turned into uv_unwrap's options (tools/uv_unwrap_options.h) as its command
+// line sets them.
 #ifndef CUT_PARAM_PYTHON_UNWRAP_ARGUMENTS_H
 #define CUT_PARAM_PYTHON_UNWRAP_ARGUMENTS_H
 
+#include "options/option_table.h"
 #include "seam_constraints.h"
 #include "uv_unwrap_options.h"
-
-#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -17,6 +17,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -81,20 +83,73 @@ inline seam_constraints::Edge_pairs edge_pairs(const py::object& object, const c
 }
 
 
-inline uv_unwrap::Options options_of(double seam_cost, const py::object& max_distortion, const py::object& hide_seams,
-                              int texture_size, double padding, const py::object& box, bool allow_overlaps)
+// The value of the keyword `object` for the row `spec` of the option table
+// (a bool or a choice as 0, 1, ...); ValueError or TypeError naming the
+// keyword otherwise.
+inline double option_value(const cut_options::Option_spec& spec, const py::object& object)
+{
+  using cut_options::Kind;
+  const std::string keyword = spec.python;
+  const std::string shown = py::repr(object).cast<std::string>();
+  switch(spec.kind)
+  {
+  case Kind::FLAG: return object.cast<bool>() ? 1. : 0.;
+  case Kind::INVERTED_FLAG: return object.cast<bool>() ? 0. : 1.;
+  case Kind::CHOICE:
+  {
+    const std::vector<std::string> names = cut_options::choice_names(spec);
+    const std::string name = py::isinstance<py::str>(object) ? object.cast<std::string>() : std::string();
+    for(std::size_t k = 0; k < names.size(); ++k)
+      if(names[k] == name) return double(k);
+    std::string listed;
+    for(std::size_t k = 0; k < names.size(); ++k)
+      listed += (k == 0 ? "'" : k + 1 == names.size() ? " or '" : ", '") + names[k] + "'";
+    throw py::value_error(keyword + " must be " + listed + ", not " + shown);
+  }
+  case Kind::RATIO:
+  {
+    double ratio = 0.;
+    if(py::isinstance<py::bool_>(object)) ratio = 1.; // True: a square (False is handled by options_of)
+    else if(py::isinstance<py::tuple>(object) || py::isinstance<py::list>(object))
+    {
+      const auto wh = object.cast<std::vector<double>>();
+      if(wh.size() != 2) throw py::value_error(keyword + " must be (width, height), a ratio, True or False");
+      ratio = wh[0] / wh[1];
+    }
+    else ratio = object.cast<double>();
+    if(!(ratio > 0.) || !std::isfinite(ratio))
+      throw py::value_error(keyword + ": the aspect ratio width / height must be a positive number");
+    return ratio;
+  }
+  default:
+  {
+    if(py::isinstance<py::bool_>(object) || !(py::isinstance<py::float_>(object) || py::isinstance<py::int_>(object) ||
+                                               PyNumber_Check(object.ptr())))
+      throw py::type_error(keyword + " must be a number, not " + shown);
+    const double x = object.cast<double>();
+    if(!cut_options::in_range(spec, x))
+      throw py::value_error(keyword + " must be " + cut_options::expected_text(spec) + ", not " + shown);
+    return x;
+  }
+  }
+}
+
+// The keyword options turned into uv_unwrap's options: `given` holds the
+// keyword of each row of the option table (None: not given, left as the
+// library leaves it: its rules, e.g. the default box, decide).
+inline uv_unwrap::Options options_of(const std::vector<py::object>& given, const py::object& hide_seams)
 {
   uv_unwrap::Options o;
   o.quiet = true;
-  if(!(seam_cost > 0.) || !std::isfinite(seam_cost))
-    throw py::value_error("seam_cost must be a positive number, not " + std::to_string(seam_cost));
-  o.lambda = seam_cost;
-  if(!max_distortion.is_none())
+  const std::vector<cut_options::Option_spec>& table = cut_options::option_table();
+  for(std::size_t i = 0; i < table.size(); ++i)
   {
-    o.max_distortion = max_distortion.cast<double>();
-    if(!(o.max_distortion >= 4.) || !std::isfinite(o.max_distortion))
-      throw py::value_error("max_distortion must be a number >= 4 (E_d of an isometry), not " +
-                            std::to_string(o.max_distortion));
+    if(given[i].is_none()) continue;
+    // box=False: no box, as uv_unwrap --no-box (a stiffness of 0)
+    if(table[i].kind == cut_options::Kind::RATIO && py::isinstance<py::bool_>(given[i]) && !given[i].cast<bool>())
+      o.method.bounding_box_stiffness = 0.;
+    else
+      table[i].set(o.method, option_value(table[i], given[i]));
   }
   if(!hide_seams.is_none())
   {
@@ -102,42 +157,45 @@ inline uv_unwrap::Options options_of(double seam_cost, const py::object& max_dis
     if(!(o.hide_seams >= 0.) || !std::isfinite(o.hide_seams))
       throw py::value_error("hide_seams must be a number >= 0, not " + std::to_string(o.hide_seams));
   }
-  if(texture_size < 1) throw py::value_error("texture_size must be at least 1, not " + std::to_string(texture_size));
-  o.texture_size = texture_size;
-  if(!(padding >= 0.) || !std::isfinite(padding))
-    throw py::value_error("padding must be a number >= 0 (texels), not " + std::to_string(padding));
-  o.padding = padding;
-  o.allow_overlaps = allow_overlaps;
-  // the box as uv_unwrap's options set it: default gentle square within a
-  // budget; asked for (--box W:H): tight, kept whatever it costs; False: none
-  o.box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
-  o.box_stiffness = SMP::gentle_bounding_box_stiffness;
-  if(!box.is_none())
-  {
-    o.box_distortion_budget = std::numeric_limits<double>::infinity();
-    if(py::isinstance<py::bool_>(box))
-    {
-      if(box.cast<bool>()) o.box_stiffness = SMP::tight_bounding_box_stiffness;
-      else o.box_stiffness = 0.;
-    }
-    else
-    {
-      double ratio = 0.;
-      if(py::isinstance<py::tuple>(box) || py::isinstance<py::list>(box))
-      {
-        const auto wh = box.cast<std::vector<double>>();
-        if(wh.size() != 2) throw py::value_error("box must be (width, height), a ratio, True or False");
-        ratio = wh[0] / wh[1];
-      }
-      else ratio = box.cast<double>();
-      if(!(ratio > 0.) || !std::isfinite(ratio))
-        throw py::value_error("box: the aspect ratio width / height must be a positive number");
-      o.box_aspect_ratio = ratio;
-      o.box_given = true;
-      o.box_stiffness = SMP::tight_bounding_box_stiffness;
-    }
-  }
   return o;
+}
+
+/// The default of a row's keyword in unwrap()'s signature: the library's,
+/// as the keyword shows it (None where the library's rule decides).
+inline py::object keyword_default(const cut_options::Option_spec& spec)
+{
+  using cut_options::Kind;
+  const std::optional<double> d = cut_options::front_end_default(spec);
+  if(!d) return py::none();
+  switch(spec.kind)
+  {
+  case Kind::FLAG: return py::bool_(*d != 0.);
+  case Kind::INVERTED_FLAG: return py::bool_(*d == 0.);
+  case Kind::COUNT: return py::int_(static_cast<long long>(*d));
+  case Kind::CHOICE: return py::str(cut_options::choice_names(spec).at(std::size_t(*d)));
+  default: return py::float_(*d);
+  }
+}
+
+/// The keyword argument of the row whose field is `name`, with its default.
+inline py::arg_v keyword_argument(const char* name)
+{
+  for(const cut_options::Option_spec& spec : cut_options::option_table())
+    if(std::string(spec.name) == name) return py::arg_v(spec.python, keyword_default(spec));
+  throw std::logic_error(std::string("no option ") + name + " in the option table");
+}
+
+/// The lines of unwrap()'s documentation on the table's keywords.
+inline std::string keyword_documentation()
+{
+  std::string doc;
+  for(const cut_options::Option_spec& spec : cut_options::option_table())
+  {
+    doc += std::string(spec.python) + ": " + spec.help;
+    if(spec.kind == cut_options::Kind::CHOICE) doc += " ('" + std::string(spec.choices) + "')";
+    doc += " [named parameter " + std::string(spec.name) + "]\n";
+  }
+  return doc;
 }
 
 } // namespace uv_unwrap_python

@@ -79,11 +79,17 @@ struct One_blas_thread
 
 // ---------------------------------------------------------------- unwrap
 
-Result unwrap(const py::object& V_object, const py::object& F_object, double seam_cost,
-              const py::object& max_distortion, const py::object& seams_object, const py::object& forbidden_object,
-              const py::object& face_weights_object, const py::object& hide_seams, int texture_size, double padding,
-              const py::object& box, bool allow_overlaps, const py::object& progress, const py::object& threads)
+// one parameter per row of the option table, named by its field
+#define CUT_PARAM_PY_PARAMETER(FIELD, ...) const py::object& FIELD,
+#define CUT_PARAM_PY_GIVEN(FIELD, ...) FIELD,
+#define CUT_PARAM_PY_KEYWORD(FIELD, ...) keyword_argument(#FIELD),
+
+Result unwrap(const py::object& V_object, const py::object& F_object,
+              CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_PARAMETER) const py::object& seams_object,
+              const py::object& forbidden_object, const py::object& face_weights_object, const py::object& hide_seams,
+              const py::object& progress, const py::object& threads)
 {
+  const std::vector<py::object> given{CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_GIVEN)};
   const auto V = as_doubles(checked_array(V_object, "V", 3, "fiu", "numbers (float or integer coordinates)"));
   const auto F = as_indices(checked_array(F_object, "F", 3, "iu", "integer vertex indices"));
   const std::size_t n = std::size_t(V.shape(0)), m = std::size_t(F.shape(0));
@@ -142,8 +148,7 @@ Result unwrap(const py::object& V_object, const py::object& F_object, double sea
       weights.push_back(r(j));
     }
   }
-  const uv_unwrap::Options options =
-    options_of(seam_cost, max_distortion, hide_seams, texture_size, padding, box, allow_overlaps);
+  const uv_unwrap::Options options = options_of(given, hide_seams);
   int thread_count = 0;
   if(!threads.is_none())
   {
@@ -303,27 +308,24 @@ PYBIND11_MODULE(uv_unwrap, m)
              get("seam_length") + ", " + std::to_string(r.uv.shape(0)) + " UVs>";
     });
 
-  m.def("unwrap", &unwrap, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("seam_cost") = 1.,
-        py::arg("max_distortion") = py::none(), py::arg("seams") = py::none(), py::arg("forbidden") = py::none(),
-        py::arg("face_weights") = py::none(), py::arg("hide_seams") = py::none(), py::arg("texture_size") = 1024,
-        py::arg("padding") = 2., py::arg("box") = py::none(), py::arg("allow_overlaps") = false,
-        py::arg("progress") = py::none(), py::arg("threads") = py::none(),
-        R"doc(Cuts the triangle mesh (V, F) and computes its UV map: a texture atlas in the unit square.
+  // the documentation: the table's keywords between the arrays and the other arguments
+  static const std::string documentation = std::string(R"doc(Cuts the triangle mesh (V, F) and computes its UV map: a texture atlas in the unit square.
 
 V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles.
-seam_cost: the seam cost lambda, relative to the mean edge length (higher: shorter seams, more distortion).
-max_distortion: E_d at most this (>= 4); the seam cost is then searched for.
+The options (from the option table; not given: the library's default):
+)doc") + keyword_documentation() + R"doc(box: also True (a tight square) or False (no box: box_stiffness 0); None: a gentle square within a budget.
 seams: (s, 2) vertex pairs: edges to cut (kept as seams). forbidden: (s, 2) vertex pairs: edges never cut.
 face_weights: (m,) positive factors of the seam cost per face (< 1 draws seams, > 1 keeps them away).
 hide_seams: strength S >= 0 of moving seams to where the surface is least visible (uv_unwrap --hide-seams).
-texture_size, padding: the texture's size and the gap between charts, in texels.
-box: None (a gentle square), (width, height) or a ratio (a tight box of that aspect ratio), False (no box).
-allow_overlaps: skip the border barrier that keeps charts from overlapping.
 progress: called as progress(phase, pass_=, alternation=, alternations=, distortion=); False cancels
   (uv_unwrap.Cancelled). Ctrl-C cancels too (KeyboardInterrupt).
 threads: number of threads (default: all cores); the result does not depend on it.
 
 Returns a Result: uv (k, 2), faces_uv (m, 3) (per corner, OBJ style: V and F keep their order), seams
 (s, 2) vertex pairs, face_charts (m,), stats (uv_unwrap --stats), warnings. The GIL is released while it runs.
-Raises TypeError / ValueError / IndexError for bad arrays, UnwrapError (with .name) when the method fails.)doc");
+Raises TypeError / ValueError / IndexError for bad arrays, UnwrapError (with .name) when the method fails.)doc";
+  m.def("unwrap", &unwrap, py::arg("V"), py::arg("F"), py::kw_only(), CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_KEYWORD)
+        py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("face_weights") = py::none(),
+        py::arg("hide_seams") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = py::none(),
+        documentation.c_str());
 }

@@ -1,6 +1,6 @@
 // One unwrapping run as uv_unwrap and the Python module (python/) do it:
-// the options (uv_unwrap_options.h) turned into the library's named
-// parameters, the seam visibility (--hide-seams), the measures taken on
+// the library's options (uv_unwrap_options.h, filled from the option table)
+// passed whole with the property maps, the seam visibility (--hide-seams), the measures taken on
 // the output (flipped faces, border crossings, overlap area, UVs in the unit square) and
 // the statistics that `uv_unwrap --stats` writes and `unwrap()` returns.
 // Both front ends call these, so their results and figures are the same.
@@ -148,24 +148,15 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
   auto forbidden = mesh.template add_property_map<edge_descriptor, bool>("e:forbidden", false).first;
   add_constraints(forbidden, face_lambda);
 
+  // the options whole (those not given unset: the library's rules decide),
+  // the property maps and the callback beside them
+  SMP::Cut_parameterization_options method = options.method;
+  method.progress_callback = progress;
   namespace P = SMP::parameters;
-  const auto np = P::lambda(options.lambda,
+  const auto np = P::cut_parameterization_options(method,
                   P::face_lambda_map(face_lambda,
                   P::forbidden_seam_edge_map(forbidden,
-                  P::epsilon_start(options.epsilon_start,
-                  P::epsilon_end(options.epsilon_end,
-                  P::iterations_per_epsilon(options.iterations,
-                  P::number_of_passes(options.passes,
-                  P::distortion_bound(options.max_distortion,
-                  P::global_injectivity(!options.allow_overlaps,
-                  P::world_units(options.world_units,
-                  P::texture_size(options.texture_size,
-                  P::padding(options.padding,
-                  P::bounding_box_aspect_ratio(options.box_aspect_ratio,
-                  P::bounding_box_stiffness(options.box_stiffness,
-                  P::bounding_box_distortion_budget(options.box_distortion_budget,
-                  P::face_discontinuity_map(v_field,
-                  P::progress_callback(progress)))))))))))))))));
+                  P::face_discontinuity_map(v_field))));
 
   const auto start = std::chrono::steady_clock::now();
   summary.result = SMP::cut_and_parameterize(mesh, seams, uvmap, np);
@@ -175,7 +166,7 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   SMP::error_name(summary.result.error) + ")", SMP::error_name(summary.result.error));
   if(!summary.result.distortion_bound_met)
     summary.warnings.push_back("E_d " + std::to_string(summary.result.distortion) + " is above --max-distortion " +
-                               std::to_string(options.max_distortion) +
+                               std::to_string(options.method.distortion_bound) +
                                ": no seam cost tried reached it (lowest E_d kept)");
   if(visibility_wanted) summary.seam_visibility = SMP::seam_visibility(mesh, seams, visibility);
   summary.flipped_faces = SMP::number_of_flipped_faces(mesh, uvmap);

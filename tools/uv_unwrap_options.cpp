@@ -4,7 +4,7 @@
 // name the value and what was expected.
 #include "uv_unwrap_options.h"
 
-#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include "options/cli_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -23,31 +23,12 @@ namespace uv_unwrap {
 
 namespace {
 
-namespace SMP = CGAL::Surface_mesh_parameterization;
-
-// The whole text is a finite number.
-bool parse_number(const std::string& text, double& value)
-{
-  std::size_t used = 0;
-  try { value = std::stod(text, &used); } catch(const std::exception&) { return false; }
-  return used != 0 && used == text.size() && std::isfinite(value);
-}
-
-// "W:H", both positive numbers: the aspect ratio W / H.
-bool parse_aspect_ratio(const std::string& text, double& ratio)
-{
-  const std::size_t colon = text.find(':');
-  if(colon == std::string::npos || text.find(':', colon + 1) != std::string::npos) return false;
-  double w = 0., h = 0.;
-  if(!parse_number(text.substr(0, colon), w) || !parse_number(text.substr(colon + 1), h)) return false;
-  ratio = w / h;
-  return w > 0. && h > 0. && std::isfinite(ratio) && ratio > 0.;
-}
-
 std::string invalid(const std::string& text, const std::string& expected)
 {
   return "invalid value '" + text + "' (expected " + expected + ")";
 }
+
+using cut_options::parse_cli_number;
 
 // A finite number for which `accept` holds, rewritten with all its digits so
 // that CLI11's conversion gives the same double as std::stod.
@@ -56,25 +37,10 @@ CLI::Validator number(const std::string& expected, std::function<bool(double)> a
   return CLI::Validator(
     [expected, accept](std::string& text) -> std::string {
       double value = 0.;
-      if(!parse_number(text, value) || !accept(value)) return invalid(text, expected);
+      if(!parse_cli_number(text, value) || !accept(value)) return invalid(text, expected);
       char digits[32];
       std::snprintf(digits, sizeof digits, "%.17g", value);
       text = digits;
-      return {};
-    },
-    "");
-}
-
-// A whole number in [1, 1e6], in any notation std::stod reads ("2e3" too),
-// rewritten as an integer for CLI11's conversion.
-CLI::Validator count()
-{
-  return CLI::Validator(
-    [](std::string& text) -> std::string {
-      double value = 0.;
-      if(!parse_number(text, value) || value != std::floor(value) || value < 1. || value > 1e6)
-        return invalid(text, "a positive integer");
-      text = std::to_string(static_cast<long>(value));
       return {};
     },
     "");
@@ -129,7 +95,6 @@ bool parse_arguments(int argc, char** argv, Options& options)
   app.get_formatter()->column_width(26);
   // as before CLI11: an option given twice takes its last value
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-  const auto positive = [](double x) { return x > 0.; };
 
   app.add_option("INPUT", options.inputs,
                  "mesh files, or directories (their .obj .off .ply .stl .gltf\n"
@@ -161,25 +126,9 @@ bool parse_arguments(int argc, char** argv, Options& options)
     ->type_name("FILE")->group(output);
   app.add_flag("-q,--quiet", options.quiet, "print nothing but warnings and errors")->group(output);
 
-  const std::string method = "Method";
-  app.add_option("--lambda", options.lambda, "seam cost, relative to the mean edge length (default 1)")
-    ->type_name("X")->transform(number("a positive number", positive))->group(method);
-  app.add_option("--epsilon-start", options.epsilon_start,
-                 "first epsilon, relative to the mean edge length (default 0.1)")
-    ->type_name("X")->transform(number("a positive number", positive))->group(method);
-  app.add_option("--epsilon-end", options.epsilon_end, "epsilon is halved while above this value (default 0.01)")
-    ->type_name("X")->transform(number("a positive number", positive))->group(method);
-  app.add_option("--iterations", options.iterations, "alternations per epsilon (default 3)")
-    ->type_name("N")->transform(count())->group(method);
-  app.add_option("--passes", options.passes, "optimize-and-cut passes (default 1)")
-    ->type_name("N")->transform(count())->group(method);
-  app.add_option("--max-distortion", options.max_distortion,
-                 "E_d at most B (>= 4), with the shortest seams found by cuts\n"
-                 "added one at a time where the map is most distorted, or else\n"
-                 "by runs with other seam costs (at most 11 runs, two or three\n"
-                 "at a time on two cores; distortion_bound)")
-    ->type_name("B")->transform(number("a number >= 4", [](double x) { return x >= 4.; }))
-    ->group(method);
+  // the library's options: the rows of the option table
+  cut_options::Given_options given;
+  cut_options::add_cli_options(app, given);
 
   const std::string seams = "Seams";
   app.add_option("--hide-seams", options.hide_seams,
@@ -212,39 +161,8 @@ bool parse_arguments(int argc, char** argv, Options& options)
                  "draws seams, white keeps them away")
     ->type_name("NAME")->group(seams);
 
-  const std::string atlas = "Texture atlas";
-  app.add_flag("--allow-overlaps", options.allow_overlaps,
-               "let a chart overlap itself (no border barrier; charts still packed apart)")->group(atlas);
-  app.add_flag("--world-units", options.world_units,
-               "keep UVs in 3D units (charts still packed) instead of [0,1]")->group(atlas);
-  app.add_option("--texture-size", options.texture_size,
-                 "texture width and height in texels, unit of --padding (default 1024)")
-    ->type_name("N")->transform(count())->group(atlas);
-  app.add_option("--padding", options.padding, "gap between charts and to the square's sides, >= 0 (default 2)")
-    ->type_name("TEXELS")
-    ->transform(number("a number >= 0, in texels", [](double x) { return x >= 0.; }))->group(atlas);
-  app.add_option_function<std::string>("--box",
-      [&options](const std::string& text) {
-        parse_aspect_ratio(text, options.box_aspect_ratio); // checked by the validator
-        options.box_given = true;
-      },
-      "pull each chart tightly into a W:H rectangle (e.g. 2:1); without\n"
-      "it, a gentle pull into a square rounds charts off")
-    ->type_name("W:H")
-    ->check(CLI::Validator(
-        [](std::string& text) {
-          double ratio = 0.;
-          return parse_aspect_ratio(text, ratio) ? std::string() : invalid(text, "W:H, two positive numbers, e.g. 2:1");
-        },
-        ""))
-    ->group(atlas);
-  app.add_option("--box-stiffness", options.box_stiffness,
-                 "how hard the box pulls, >= 0 (default 5, or 300 with --box);\n"
-                 "given, the box is kept whatever it costs (the default box is\n"
-                 "weakened, then dropped, where it raises E_d by more than 0.045)")
-    ->type_name("S")->transform(number("a number >= 0", [](double x) { return x >= 0.; }))->group(atlas);
   bool no_box = false;
-  app.add_flag("--no-box", no_box, "no bounding box at all (same as --box-stiffness 0)")->group(atlas);
+  app.add_flag("--no-box", no_box, "no bounding box at all (same as --box-stiffness 0)")->group("Texture atlas");
 
   const std::string pictures = "Pictures";
   app.add_option("--svg", options.svg, "write the UV layout, colored by distortion, as SVG")
@@ -283,18 +201,14 @@ bool parse_arguments(int argc, char** argv, Options& options)
     throw Failure(std::string(e.what()) + " (see --help)");
   }
 
+  const std::size_t stiffness = cut_options::option_index("bounding_box_stiffness");
   if(no_box)
   {
-    if(options.box_stiffness > 0.) throw Failure("--no-box contradicts --box-stiffness (give one of them)");
-    options.box_stiffness = 0.;
+    if(given[stiffness].value_or(0.) > 0.) throw Failure("--no-box contradicts --box-stiffness (give one of them)");
+    given[stiffness] = 0.;
   }
-  // as in the library: a box asked for is kept whatever it costs, the default one within a budget
-  options.box_distortion_budget = SMP::gentle_bounding_box_distortion_budget;
-  if(options.box_given || options.box_stiffness >= 0.)
-    options.box_distortion_budget = std::numeric_limits<double>::infinity();
-  if(options.box_stiffness < 0.)
-    options.box_stiffness = options.box_given ? SMP::tight_bounding_box_stiffness
-                                              : SMP::gentle_bounding_box_stiffness;
+  // the options not given stay unset: the library's rules (the default box) decide
+  cut_options::apply(given, options.method);
   const bool several = options.inputs.size() > 1 ||
                        (options.inputs.size() == 1 && std::filesystem::is_directory(options.inputs.front()));
   options.inputs = expand_directories(options.inputs);
@@ -308,7 +222,7 @@ bool parse_arguments(int argc, char** argv, Options& options)
     throw Failure("--svg, --png, --v-field and --v-png take one input");
   if(several && !(options.seams_file.empty() && options.forbid_file.empty() && options.save_seams_file.empty()))
     throw Failure("--seams, --forbid and --save-seams take one input (vertex indices are a mesh's own)");
-  if(options.epsilon_end > options.epsilon_start)
+  if(options.method.epsilon_end > options.method.epsilon_start)
     throw Failure("--epsilon-end must not exceed --epsilon-start");
   return true;
 }

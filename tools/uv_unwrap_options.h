@@ -5,6 +5,8 @@
 
 #include "preview/preview.h"
 
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,21 +33,10 @@ struct Options
   std::string jsonl;          // one line of statistics per input ("-": stdout)
   std::string svg, png, v_field, v_png; // pictures, written by tools/preview
   Preview_camera camera;         // of the PNG; y up unless --up
-  double lambda = 1.;
-  double epsilon_start = 0.1;
-  double epsilon_end = 0.01;
-  int iterations = 3;
-  int passes = 1;
-  double max_distortion = 0.;    // > 0: distortion_bound
-  // atlas
-  bool allow_overlaps = false;   // global_injectivity(false)
-  bool world_units = false;
-  int texture_size = 1024;
-  double padding = 2.;           // texels
-  double box_aspect_ratio = 1.;  // width / height of the bounding box
-  double box_stiffness = -1.;    // < 0: gentle (5) for the default square, tight (300) with --box
-  bool box_given = false;
-  double box_distortion_budget = 0.; // set by parse_arguments (infinite once the box is asked for)
+  // the library's options, filled from the option table's flags
+  // (options/option_table.h); those not given stay as the library leaves
+  // them (unset: its rules, e.g. the default box, decide)
+  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method;
   // seams and visibility (face_visibility.h)
   double hide_seams = 0.;        // > 0: λ from the visibility, with this strength
   bool report_visibility = false; // compute seam_visibility without steering the seams

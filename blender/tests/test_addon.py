@@ -211,6 +211,32 @@ def main():
     check_result(obj, "first of two, attribute", marked, sharp)
     check_result(other, "second of two")
 
+    # an option of the table (the inner solver, an enum property) reaches the library
+    from uv_unwrap_seams import job as job_module
+    ran = []
+    original_run = job_module.Job.run
+
+    def recording_run(self):
+        original_run(self)
+        ran.append(self)
+
+    job_module.Job.run = recording_run
+    try:
+        uv_sphere()  # the same sphere twice (a run marks its seams, which the next would keep)
+        bpy.ops.uv.unwrap_optimized_seams()
+        obj, marked, sharp = uv_sphere()
+        bpy.ops.uv.unwrap_optimized_seams(inner_solver='PROXY_QUASI_NEWTON')
+    finally:
+        job_module.Job.run = original_run
+    newton, proxy = ran[-2], ran[-1]
+    check("inner_solver" not in newton.options and proxy.options.get("inner_solver") == "proxy-quasi-newton",
+          "the inner_solver property becomes unwrap()'s keyword (%s, %s)" % (newton.options, proxy.options))
+    p, n = proxy.results[0].stats, newton.results[0].stats
+    check(p["newton_iterations"] > n["newton_iterations"] and p["factorizations"] != n["factorizations"],
+          "proxy quasi-Newton: more iterations than Newton, other factorizations (%d, %d against %d, %d)"
+          % (p["newton_iterations"], p["factorizations"], n["newton_iterations"], n["factorizations"]))
+    check_result(obj, "sphere, proxy quasi-Newton", marked, sharp)
+
     # a mesh of CGAL's data set
     data = os.environ.get("CGAL_DATA_DIR", "")
     path = os.path.join(data, "meshes", "elephant.off")
@@ -242,6 +268,17 @@ def main():
             result = bpy.ops.uv.unwrap_optimized_seams()
             check(result == {'FINISHED'}, "the operator finishes on the program")
             check_result(obj, "sphere, uv_unwrap program", marked, sharp)
+            # the table's options through the program's flags: the same as through the module
+            options = {"inner_solver": "proxy-quasi-newton", "box_stiffness": 12.0, "allow_overlaps": False}
+            by_flags = Job([obj], options, protect="sharp_edge")
+            by_flags.run()
+            os.environ.pop("UV_UNWRAP_SEAMS_BACKEND")
+            by_keywords = Job([obj], options, protect="sharp_edge")
+            by_keywords.run()
+            os.environ["UV_UNWRAP_SEAMS_BACKEND"] = "uv_unwrap"
+            a, b = by_keywords.results[0], by_flags.results[0]
+            check(all(a.stats[k] == b.stats[k] for k in ("factorizations", "newton_iterations", "distortion")),
+                  "inner_solver and box_stiffness as the program's flags: the module's result")
             canceled = Job([obj], {})
             canceled.cancel()
             canceled.run()

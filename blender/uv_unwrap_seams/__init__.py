@@ -14,8 +14,8 @@ bl_info = {
 
 if "bpy" in locals():  # reloaded by Blender: reload the parts too
     import importlib
-    from . import uv_unwrap_cli, backend, mesh_arrays, job, operator, preferences
-    for part in (uv_unwrap_cli, backend, mesh_arrays, job, operator, preferences):
+    from . import options, uv_unwrap_cli, backend, mesh_arrays, job, operator, preferences
+    for part in (options, uv_unwrap_cli, backend, mesh_arrays, job, operator, preferences):
         importlib.reload(part)
 
 import bpy  # noqa: E402

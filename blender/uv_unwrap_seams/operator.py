@@ -7,6 +7,7 @@ the end, as one undo step, and left as it was on cancel or failure."""
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 
+from . import options as option_table
 from .job import Job
 
 
@@ -28,25 +29,10 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
     bl_label = "Unwrap with optimized seams"
     bl_options = {'REGISTER', 'UNDO'}
 
-    seam_cost: FloatProperty(name="Seam cost", default=1.0, min=0.01, soft_max=10.0,
-                             description="Cost of a seam relative to distortion: higher gives shorter seams "
-                                         "and more stretch")
-    use_max_distortion: BoolProperty(name="Bound the distortion", default=False,
-                                     description="Search the seam cost for a distortion bound")
-    max_distortion: FloatProperty(name="Distortion bound", default=4.2, min=4.0, soft_max=6.0,
-                                  description="Largest E_d (4: no stretch at all)")
+    # the method's options: added from the option table below (options.py)
     hide_seams: FloatProperty(name="Hide seams", default=0.0, min=0.0, soft_max=10.0,
                               description="Move seams to where the surface is least visible (0: off)")
-    margin: FloatProperty(name="Margin (texels)", default=2.0, min=0.0, soft_max=32.0,
-                          description="Gap between charts and to the square's sides, in texels")
-    texture_size: IntProperty(name="Texture size", default=1024, min=1, soft_max=8192,
-                              description="Width and height of the texture in texels (the margin's unit)")
-    box: EnumProperty(name="Box", default='GENTLE',
-                      items=[('GENTLE', "Gentle square", "Round charts off toward a square, within a small "
-                                                          "distortion budget"),
-                             ('TIGHT', "Tight box", "Pull each chart into a box of the given aspect ratio"),
-                             ('NONE', "None", "No box: the least distortion")])
-    box_aspect: FloatProperty(name="Box width / height", default=1.0, min=0.05, max=20.0)
+    show_advanced: BoolProperty(name="Advanced", default=False, description="Show the method's other options")
     keep_seams: BoolProperty(name="Keep marked seams", default=True,
                              description="The seams already marked stay seams")
     protect: EnumProperty(name="Never cut", default='sharp_edge',
@@ -61,14 +47,9 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
 
     # -- options
     def _options(self):
-        options = {"seam_cost": self.seam_cost, "hide_seams": self.hide_seams or None,
-                   "padding": self.margin, "texture_size": self.texture_size}
-        if self.use_max_distortion:
-            options["max_distortion"] = self.max_distortion
-        if self.box == 'TIGHT':
-            options["box"] = self.box_aspect
-        elif self.box == 'NONE':
-            options["box"] = False
+        options = option_table.keywords(self)
+        if self.hide_seams:
+            options["hide_seams"] = self.hide_seams
         return options
 
     def _job(self, context):
@@ -82,11 +63,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         layout = self.layout
         layout.use_property_split = True
         layout.prop(self, "seam_cost")
-        row = layout.row(heading="Distortion bound")
-        row.prop(self, "use_max_distortion", text="")
-        sub = row.row()
-        sub.active = self.use_max_distortion
-        sub.prop(self, "max_distortion", text="")
+        option_table.draw_row(layout, self, option_table.BY_KEYWORD["max_distortion"])
         layout.prop(self, "hide_seams")
         layout.prop(self, "margin")
         layout.prop(self, "texture_size")
@@ -100,6 +77,11 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         layout.prop(self, "new_uv_map")
         if self.new_uv_map:
             layout.prop(self, "uv_map_name")
+        layout.prop(self, "show_advanced")
+        if self.show_advanced:
+            box = layout.box()
+            for row in option_table.advanced_rows():
+                option_table.draw_row(box, self, row)
 
     @classmethod
     def poll(cls, context):
@@ -189,6 +171,9 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         wm.event_timer_remove(self._timer)
         wm.progress_end()
         context.workspace.status_text_set(None)
+
+
+option_table.add_properties(UV_OT_unwrap_optimized_seams)
 
 
 def menu_entry(self, context):

@@ -15,6 +15,8 @@ import tempfile
 
 import numpy as np
 
+from . import options as option_table
+
 
 class UnwrapError(RuntimeError):
     def __init__(self, message, name):
@@ -40,23 +42,11 @@ def _selection(path, pairs):
         f.write("\n\n" + " ".join("%d %d" % (a, b) for a, b in np.asarray(pairs, dtype=np.int64).reshape(-1, 2)) + "\n")
 
 
-def _arguments(seam_cost=1.0, max_distortion=None, hide_seams=None, texture_size=1024, padding=2.0, box=None,
-               allow_overlaps=False):
-    args = ["--lambda", repr(float(seam_cost)), "--texture-size", str(int(texture_size)),
-            "--padding", repr(float(padding))]
-    if max_distortion is not None:
-        args += ["--max-distortion", repr(float(max_distortion))]
+def _arguments(hide_seams=None, **options):
+    """uv_unwrap's flags for unwrap()'s keywords (the option table's, and hide_seams)."""
+    args = option_table.cli_arguments(options)
     if hide_seams:
         args.append("--hide-seams=%r" % float(hide_seams))
-    if box is False:
-        args.append("--no-box")
-    elif box is True:
-        args += ["--box", "1:1"]
-    elif box is not None:
-        w, h = box if isinstance(box, (tuple, list)) else (box, 1.0)
-        args += ["--box", "%r:%r" % (float(w), float(h))]
-    if allow_overlaps:
-        args.append("--allow-overlaps")
     return args
 
 

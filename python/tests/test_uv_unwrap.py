@@ -107,6 +107,8 @@ def test_options_reach_the_method(cap):
     ({"box": (2, 1), "padding": 8, "texture_size": 256}, ["--box", "2:1", "--padding", "8", "--texture-size", "256"]),
     ({"box": False, "seam_cost": 2.0}, ["--no-box", "--lambda", "2"]),
     ({"hide_seams": 6, "allow_overlaps": True}, ["--hide-seams=6", "--allow-overlaps"]),
+    ({"inner_solver": "proxy-quasi-newton", "max_newton_iterations": 200, "box_stiffness": 12},
+     ["--inner-solver", "proxy-quasi-newton", "--max-newton-iterations", "200", "--box-stiffness", "12"]),
 ])
 def test_options_as_uv_unwrap(tmp_path, cap, options, arguments):
     program = os.environ.get("UV_UNWRAP")
@@ -121,6 +123,19 @@ def test_options_as_uv_unwrap(tmp_path, cap, options, arguments):
     r = uv_unwrap.unwrap(V, F, **options)
     for key in ("distortion", "seam_length", "charts", "uv_coverage", "seam_visibility"):
         assert r.stats[key] == cli[key], key
+
+
+def test_inner_solver_reaches_the_library(cap):
+    V, F = cap
+    default = uv_unwrap.unwrap(V, F)
+    newton = uv_unwrap.unwrap(V, F, inner_solver="newton")
+    proxy = uv_unwrap.unwrap(V, F, inner_solver="proxy-quasi-newton")
+    for key in ("factorizations", "newton_iterations", "distortion", "seam_length"):
+        assert newton.stats[key] == default.stats[key], key
+    # the proxy solver takes L-BFGS steps between its factorizations: more iterations, other factorizations
+    assert proxy.stats["newton_iterations"] > newton.stats["newton_iterations"]
+    assert proxy.stats["factorizations"] != newton.stats["factorizations"]
+    check_atlas(V, F, proxy)
 
 
 def test_kept_and_forbidden_seams(cap):
@@ -175,6 +190,9 @@ def test_bad_arrays(cap, change, error, message):
     ({"padding": -1}, ValueError, "padding must be a number >= 0"),
     ({"texture_size": 0}, ValueError, "texture_size must be at least 1"),
     ({"box": (1, 0)}, ValueError, "aspect ratio"),
+    ({"inner_solver": "bfgs"}, ValueError, "inner_solver must be 'newton' or 'proxy-quasi-newton', not 'bfgs'"),
+    ({"epsilon_start": -1}, ValueError, "epsilon_start must be a positive number"),
+    ({"max_newton_iterations": 2.5}, ValueError, "max_newton_iterations must be at least 1"),
     ({"face_weights": np.ones(3)}, ValueError, "one value per face"),
     ({"seams": np.array([[0, 10**6]])}, IndexError, r"seams\[0, 1\] = 1000000 is not a vertex index"),
     ({"progress": 3}, TypeError, "progress must be callable"),
