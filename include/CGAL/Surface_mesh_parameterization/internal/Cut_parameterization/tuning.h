@@ -55,7 +55,7 @@ constexpr double contact_linear_ratio = 1e-12;
 constexpr double barrier_relative_distance = 0.25;
 /// Energy of a pair at ε/2 relative to the mean face area.
 constexpr double barrier_relative_weight = 1.;
-/// A border segment shorter in UV than this fraction of ε's 3D length is squashed: its ε follows its UV length.
+/// A border segment shorter in UV than this times the unsquashed ε is squashed: its ε follows its UV length.
 constexpr double barrier_squashed = 0.1;
 /// Close pairs outside the pattern join it once they are this fraction of the declared pairs...
 constexpr double barrier_pattern_growth = 1. / 16.;
