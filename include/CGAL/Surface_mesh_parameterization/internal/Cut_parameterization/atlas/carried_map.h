@@ -33,13 +33,8 @@ struct Carried_map
 /// `opening` times its least height over the opposite edges of its faces
 /// (alone, it could not flip a face; two copies on one face may), so that
 /// the sides part. A copy where the border turns back on itself (a slit's
-/// tip, a spike: no bisector) stays.
-///
-/// Measured on ArtDemo with holes (wild_corpus.py, 2 cores), the two final
-/// solves after the splits under the barrier without box, from the carried
-/// map: opening 0.1: 118 and 62 Newton iterations, mean energy at the start
-/// 2.70 and 0.90; 0.3: 113 and 57, 0.94 and 0.42; 0.6: a chart with three
-/// flipped faces (then from Tutte: 171). From Tutte: about 150 each.
+/// tip, a spike: no bisector) stays. (The opening's measurements: the
+/// manual's page CutParamDesignPipeline.)
 ///
 /// `carried.valid` tells, per chart of `after`, whether the carried map is a
 /// start for the border barrier: no flipped face and a border that does not
