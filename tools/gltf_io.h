@@ -19,8 +19,9 @@
 // already split in the input, e.g. along hard normals, stay split); every
 // attribute (POSITION, NORMAL, TANGENT, COLOR_n, JOINTS_n, WEIGHTS_n, other
 // TEXCOORD_n, morph targets) is carried to the new vertices; indices become
-// 32-bit. The new data is appended to the first buffer (the GLB's binary
-// chunk); the old accessors stay in the file, unused by that primitive.
+// 32-bit, and strips and fans lists of triangles. The new data is appended
+// to the first buffer (the GLB's binary chunk); the old accessors stay in
+// the file, unused by that primitive.
 #ifndef CUT_PARAM_TOOLS_GLTF_IO_H
 #define CUT_PARAM_TOOLS_GLTF_IO_H
 
@@ -215,8 +216,11 @@ inline void load(const std::string& filename, Document& doc)
   doc.input_directory = std::filesystem::path(filename).parent_path().string();
 }
 
-/// The primitives made of triangles (mode TRIANGLES), in mesh order. The
-/// others (points, lines, strips, fans) are left as they are, with a warning.
+/// The primitives made of triangles (mode TRIANGLES, TRIANGLE_STRIP or
+/// TRIANGLE_FAN), in mesh order; strips and fans are read as their
+/// triangles and written back as lists (set_corner_uvs()), with a note in
+/// the warnings. The others (points, lines) are left as they are, with a
+/// warning.
 inline std::vector<Primitive_ref> triangle_primitives(Document& doc)
 {
   std::vector<Primitive_ref> refs;
@@ -224,8 +228,15 @@ inline std::vector<Primitive_ref> triangle_primitives(Document& doc)
     for(std::size_t p = 0; p < doc.model.meshes[m].primitives.size(); ++p)
     {
       const tinygltf::Primitive& prim = doc.model.meshes[m].primitives[p];
-      if(prim.mode == TINYGLTF_MODE_TRIANGLES && prim.attributes.count("POSITION"))
+      const bool strip = prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP, fan = prim.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+      if((prim.mode == TINYGLTF_MODE_TRIANGLES || strip || fan) && prim.attributes.count("POSITION"))
+      {
         refs.push_back({int(m), int(p)});
+        if(strip || fan)
+          doc.warnings.push_back("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) + ": a triangle " +
+                                 (strip ? "strip (mode 5)" : "fan (mode 6)") +
+                                 ", read as its triangles and written back as a list of triangles (mode 4)");
+      }
       else
         doc.warnings.push_back("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
                                ": not a list of triangles, left without new UVs");
@@ -253,6 +264,23 @@ inline Triangles read_triangles(const Document& doc, Primitive_ref ref, bool wel
   }
   else
     for(std::size_t i = 0; i < positions.count(); ++i) indices.push_back(std::uint32_t(i));
+  if(prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN)
+  {
+    // the triangles of the glTF specification (3.7.2.1), strips alternating
+    // their corners so that all keep the first one's winding; those with a
+    // repeated index (the joins of strips) draw nothing and are left out
+    std::vector<std::uint32_t> list;
+    for(std::size_t i = 0; i + 2 < indices.size(); ++i)
+    {
+      const std::array<std::uint32_t, 3> c =
+        prim.mode == TINYGLTF_MODE_TRIANGLE_FAN
+          ? std::array<std::uint32_t, 3>{indices[i + 1], indices[i + 2], indices[0]}
+          : std::array<std::uint32_t, 3>{indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]};
+      if(c[0] != c[1] && c[1] != c[2] && c[0] != c[2]) list.insert(list.end(), c.begin(), c.end());
+    }
+    indices = std::move(list);
+    if(indices.empty()) throw Gltf_error("the triangle strip or fan has no triangle");
+  }
   if(indices.size() % 3) throw Gltf_error("the index count is not a multiple of 3");
 
   Triangles t;
@@ -348,6 +376,7 @@ inline void set_corner_uvs(Document& doc, Primitive_ref ref, const Triangles& t,
 
   prim.attributes = attributes;
   prim.indices = int(model.accessors.size()) - 1;
+  prim.mode = TINYGLTF_MODE_TRIANGLES; // strips and fans become lists
 }
 
 /// Writes the document as .glb (binary) or .gltf (JSON with its buffers in

@@ -18,6 +18,11 @@
 //     corrupt file could make them allocate without bound, loop, or convert
 //     out-of-range numbers                              -> ERROR_CANNOT_READ
 //   - CGAL reads it; every face index names a vertex   -> ERROR_CANNOT_READ
+//     (what CGAL's readers do not read is fixed first, with a warning: OFF
+//     counts glued to the keyword, "OFF8 6 12"; ASCII PLY element lines
+//     ending with values the header does not list, as VCG/MeshLab writes
+//     faces, cut there; OBJ lines continued with a trailing backslash,
+//     joined; OBJ polylines and points, `l` and `p`, ignored)
 //   - every coordinate is finite                       -> ERROR_NON_FINITE_COORDINATE
 //   - there is at least one face                       -> ERROR_EMPTY_MESH
 // and what is repaired (each adds a warning to the report):
@@ -53,6 +58,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -118,6 +124,20 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
 /// (e.g. "'mesh.off'"). Throws Input_error; fills `report` otherwise.
 void mesh_from_polygon_soup(const std::vector<File_point>& points, std::vector<std::vector<std::size_t>> polygons,
                             const std::string& name, Mesh& mesh, Input_report& report);
+
+/// After mesh_from_polygon_soup() on a soup of triangles (`points`,
+/// `triangles`, as given to it), with its `report`: for corner k of triangle
+/// t, `corners[t][k]` is a halfedge of `mesh` (of a face, pointing to the
+/// vertex at that corner) whose UV that corner gets. Without repair, face t
+/// of the mesh is triangle t. After the soup repair, a triangle is found
+/// again by the positions of its corners: a triangle that the repair merged
+/// with a duplicate gets that duplicate's face; one it dropped (two corners
+/// at the same position) gets, at each corner, a face at that position
+/// (a null halfedge where no face is). For the formats that keep their own
+/// triangles (glTF).
+void triangle_corner_halfedges(const std::vector<File_point>& points,
+                               const std::vector<std::vector<std::size_t>>& triangles, const Mesh& mesh,
+                               const Input_report& report, std::vector<std::array<Mesh::Halfedge_index, 3>>& corners);
 
 } // namespace mesh_input
 

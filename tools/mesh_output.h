@@ -103,10 +103,15 @@ bool write_obj_keeping_input(const std::string& input, const std::string& output
 
   std::ifstream in(input, std::ios::binary);
   std::vector<std::string> lines;
+  bool continued = false; // a line ending with a backslash goes on with the next (not a comment), as the reader has it
   for(std::string line; std::getline(in, line);)
   {
     if(!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
+    if(continued) lines.back() += line;
+    else lines.push_back(line);
+    const std::size_t last = line.find_last_not_of(" \t");
+    continued = last != std::string::npos && line[last] == '\\' && detail::keyword_of(lines.back())[0] != '#';
+    if(continued) lines.back().replace(lines.back().size() - (line.size() - last), std::string::npos, " ");
   }
   if(!in.eof()) { problem = "cannot read '" + input + "' again"; return false; }
 

@@ -369,6 +369,35 @@ void unwrap_mesh(const Options& options, Mesh& mesh, SeamMap seams, UVMap uvmap,
                   "ERROR_CANCELED");
 }
 
+// A primitive whose triangles are no manifold mesh, welded or not (an edge of
+// more than two faces, faces repeated or with a repeated corner): repaired as
+// a polygon soup by the input path of mesh files (tools/mesh_input.h), the
+// warnings prefixed with `name`; `corners`: the halfedge whose UV each corner
+// of `t` gets (the output keeps the primitive's own triangles).
+void repair_primitive(const std::string& name, const gltf_io::Triangles& t, Mesh& mesh,
+                      std::vector<std::array<halfedge_descriptor, 3>>& corners, std::vector<std::string>& warnings)
+{
+  std::vector<mesh_input::File_point> points;
+  for(const auto& p : t.points) points.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::vector<std::size_t>> triangles;
+  for(const auto& f : t.faces) triangles.push_back({f[0], f[1], f[2]});
+  mesh_input::Input_report report;
+  try
+  {
+    mesh_input::mesh_from_polygon_soup(points, triangles, "the primitive", mesh, report);
+  }
+  catch(const mesh_input::Input_error& e)
+  {
+    throw Failure(e.what(), e.status);
+  }
+  mesh_input::triangle_corner_halfedges(points, triangles, mesh, report, corners);
+  for(const std::string& w : report.warnings)
+  {
+    std::cerr << "uv_unwrap: warning: " << printable_text(name + ": " + w) << std::endl;
+    warnings.push_back(name + ": " + w);
+  }
+}
+
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),
 // into its own atlas; the statistics add up the primitives (E_d weighted by
 // area, E_s from the summed seam length and area, as METHOD.md defines them).
@@ -416,9 +445,12 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
         if(!repeated && PMP::is_polygon_soup_a_polygon_mesh(polygons)) break;
         polygons.clear();
       }
-      if(polygons.empty()) throw Failure(name + " is not a manifold triangle mesh", "ERROR_NON_MANIFOLD");
       Mesh mesh;
-      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      std::vector<std::array<halfedge_descriptor, 3>> corner_halfedges; // after a repair: each corner's UV
+      if(polygons.empty()) // repaired as the input path repairs mesh files (t: the file's vertices)
+        repair_primitive(name, t, mesh, corner_halfedges, summary.warnings);
+      else
+        PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
       auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
       auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
       auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
@@ -431,11 +463,19 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
 
       // the UV of each corner: face i of the mesh is triangle i of the primitive
       std::vector<std::array<double, 2>> uvs(3 * t.faces.size());
-      for(face_descriptor f : faces(mesh))
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-          for(int k = 0; k < 3; ++k)
-            if(std::size_t(target(h, mesh)) == t.faces[std::size_t(f)][std::size_t(k)])
-              uvs[3 * std::size_t(f) + std::size_t(k)] = {uvmap[h].x(), uvmap[h].y()};
+      if(corner_halfedges.empty())
+      {
+        for(face_descriptor f : faces(mesh))
+          for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+            for(int k = 0; k < 3; ++k)
+              if(std::size_t(target(h, mesh)) == t.faces[std::size_t(f)][std::size_t(k)])
+                uvs[3 * std::size_t(f) + std::size_t(k)] = {uvmap[h].x(), uvmap[h].y()};
+      }
+      else
+        for(std::size_t f = 0; f < corner_halfedges.size(); ++f)
+          for(std::size_t k = 0; k < 3; ++k)
+            if(const halfedge_descriptor h = corner_halfedges[f][k]; h != Mesh::null_halfedge())
+              uvs[3 * f + k] = {uvmap[h].x(), uvmap[h].y()};
       gltf_io::set_corner_uvs(doc, ref, t, uvs, options.uv_set);
 
       const double a = PMP::area(mesh);

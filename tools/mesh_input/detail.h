@@ -28,13 +28,21 @@ inline std::string quoted(const std::string& filename) { return "'" + filename +
 using Polygon = std::vector<std::size_t>;
 
 // file_structure.cpp: the structure of a file of `file_size` bytes, checked
-// before CGAL's readers see it (throw Input_error).
-void check_off_structure(const std::string& filename, std::uintmax_t file_size);
-void check_ply_structure(const std::string& filename, std::uintmax_t file_size);
-void check_obj_structure(const std::string& filename);
+// before CGAL's readers see it (throw Input_error). Where the file needs a
+// fix that CGAL's reader lacks (OFF counts glued to the keyword, PLY element
+// lines with extra values, OBJ line continuations and `l` lines),
+// `normalized` gets the fixed text, which CGAL then reads instead of the
+// file, and `notes` a line saying what was done; `normalized` stays empty
+// otherwise.
+void check_off_structure(const std::string& filename, std::uintmax_t file_size, std::string& normalized,
+                         std::vector<std::string>& notes);
+void check_ply_structure(const std::string& filename, std::uintmax_t file_size, std::string& normalized,
+                         std::vector<std::string>& notes);
+void check_obj_structure(const std::string& filename, std::string& normalized, std::vector<std::string>& notes);
 
-// read_soup.cpp
-void read_soup(const std::string& filename, std::vector<File_point>& points, std::vector<Polygon>& polygons);
+// read_soup.cpp: the soup of the file; `notes`: what the reading fixed (see above).
+void read_soup(const std::string& filename, std::vector<File_point>& points, std::vector<Polygon>& polygons,
+               std::vector<std::string>& notes);
 std::string describe_soup_problem(const std::vector<Polygon>& polygons, std::size_t number_of_points);
 
 // triangulation.cpp

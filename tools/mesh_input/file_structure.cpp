@@ -80,9 +80,8 @@ inline bool is_valid_off_color(const double* rgb)
 // files (nOFF), colors in binary files, short lines or out-of-range values in
 // colored files, invalid face sizes and vertex indices, and counts the file
 // cannot hold.
-void check_off_structure(const std::string& filename, std::uintmax_t file_size)
+inline void check_off_stream(std::istream& in, const std::string& filename, std::uintmax_t file_size)
 {
-  std::ifstream in(filename, std::ios::binary);
   char c = 0;
   while((in >> c) && c == '#') in >> CGAL::skip_until_EOL;
   if(!in) cannot_read(filename, "no OFF header");
@@ -199,6 +198,53 @@ void check_off_structure(const std::string& filename, std::uintmax_t file_size)
   }
 }
 
+// The whole file as bytes.
+inline std::string file_bytes(const std::string& filename)
+{
+  std::ifstream in(filename, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// An OFF file whose first count follows its keyword without a space
+// ("OFF8 6 12", as some exporters write): CGAL's header scanner takes
+// "OFF8" for one keyword and refuses it, so CGAL reads the file with a space
+// put there. The keyword is read as that scanner reads it.
+void check_off_structure(const std::string& filename, std::uintmax_t file_size, std::string& normalized,
+                         std::vector<std::string>& notes)
+{
+  normalized.clear();
+  std::ifstream in(filename, std::ios::binary);
+  char c = 0;
+  while((in >> c) && c == '#') in >> CGAL::skip_until_EOL;
+  const std::streamoff start = in ? std::streamoff(in.tellg()) - 1 : -1;
+  std::string keyword(1, c);
+  while(in && keyword.size() < 41 && in.get(c) && std::isalnum(static_cast<unsigned char>(c))) keyword += c;
+  const std::size_t off = keyword.find("OFF");
+  std::size_t digits = 0;
+  if(start >= 0 && off != std::string::npos && off + 3 < keyword.size() &&
+     keyword.find_first_not_of("STCN4n") >= off) // [ST][C][N][4][n]OFF, then the count
+  {
+    digits = keyword.size() - off - 3;
+    for(std::size_t k = off + 3; k < keyword.size(); ++k)
+      if(!std::isdigit(static_cast<unsigned char>(keyword[k]))) digits = 0;
+  }
+  if(digits == 0)
+  {
+    in.clear();
+    in.seekg(0);
+    check_off_stream(in, filename, file_size);
+    return;
+  }
+  normalized = file_bytes(filename);
+  normalized.insert(std::size_t(start) + off + 3, 1, ' ');
+  std::istringstream fixed(normalized);
+  check_off_stream(fixed, filename, file_size + 1);
+  notes.push_back("OFF header '" + keyword + "': its first element count follows the keyword without a space, read as '" +
+                  keyword.substr(0, off + 3) + " " + keyword.substr(off + 3) + "'");
+}
+
 // ------------------------------------------------------------ PLY structure
 
 struct Ply_property
@@ -264,11 +310,104 @@ inline std::string item_name_of(const std::string& line)
   return name;
 }
 
+// ASCII PLY data written one element per line, where some lines carry
+// values after those the header lists (VCG/MeshLab writes faces so): CGAL
+// reads values one after the other, whatever the lines, and would take
+// these for the next element's. If every element of the header is on a
+// line of its own with at least its values, and nothing but blank lines
+// follows the last, `normalized` gets the header and the lines without
+// their extra values (`data_start`: where the data starts in it), `notes`
+// a line per element kind, and the result is true. Otherwise (elements over
+// several lines, or several on one line: CGAL reads those as they are) `in`
+// is left where it was and the result is false.
+inline bool cut_extra_ply_values(std::istream& in, const std::vector<Ply_element>& elements, std::string& normalized,
+                                 std::size_t& data_start, std::vector<std::string>& notes)
+{
+  const std::streamoff start = in.tellg();
+  if(start < 0) return false;
+  struct Cut { long long lines = 0, first = 0; std::size_t values = 0; };
+  std::vector<Cut> cuts(elements.size());
+  std::string line, token;
+  std::vector<std::string> tokens;
+  // One walk over the lines; `data` (if not null) gets them without their
+  // extra values. False if the data is not one element per line.
+  auto walk = [&](std::string* data) {
+    in.clear();
+    in.seekg(start);
+    for(std::size_t e = 0; e < elements.size(); ++e)
+      for(long long item = 0; item < elements[e].count; ++item)
+      {
+        do
+          if(!std::getline(in, line)) return false;
+        while(line.find_first_not_of(" \t\r") == std::string::npos);
+        std::istringstream words(line);
+        tokens.clear();
+        while(words >> token) tokens.push_back(token);
+        std::size_t used = 0;
+        for(const Ply_property& p : elements[e].properties)
+        {
+          if(used >= tokens.size()) return false;
+          if(!p.list)
+          {
+            ++used;
+            continue;
+          }
+          if(!is_ply_ascii_token(tokens[used], false)) return false;
+          const long long n = std::stoll(tokens[used++]);
+          if(n < 0 || std::uintmax_t(n) > tokens.size() - used) return false;
+          used += std::size_t(n);
+        }
+        if(used < tokens.size() && !data)
+        {
+          if(cuts[e].lines++ == 0) cuts[e].first = item;
+          cuts[e].values = (std::max)(cuts[e].values, tokens.size() - used);
+        }
+        if(data)
+        {
+          for(std::size_t k = 0; k < used; ++k) *data += (k ? " " : "") + tokens[k];
+          *data += '\n';
+        }
+      }
+    while(std::getline(in, line))
+      if(line.find_first_not_of(" \t\r") != std::string::npos) return false;
+    return true;
+  };
+  bool cut = false;
+  if(walk(nullptr))
+    for(const Cut& c : cuts) cut = cut || c.lines > 0;
+  std::string data;
+  if(cut)
+  {
+    in.clear();
+    in.seekg(0);
+    normalized.assign(std::size_t(start), '\0');
+    cut = bool(in.read(&normalized[0], start)) && walk(&data);
+  }
+  if(!cut)
+  {
+    normalized.clear();
+    in.clear();
+    in.seekg(start);
+    return false;
+  }
+  data_start = normalized.size();
+  normalized += data;
+  for(std::size_t e = 0; e < elements.size(); ++e)
+    if(cuts[e].lines > 0)
+      notes.push_back(std::to_string(cuts[e].lines) + " '" + elements[e].name.substr(0, 30) +
+                      "' element lines of the PLY file (first: element " + std::to_string(cuts[e].first) +
+                      ") end with values that its header does not list (up to " + std::to_string(cuts[e].values) +
+                      " more): ignored");
+  return true;
+}
+
 // Parses the header the way CGAL's PLY_reader does, then walks every
 // element: list sizes must be non-negative integers that fit in the data
 // left, and the data must not end early.
-void check_ply_structure(const std::string& filename, std::uintmax_t file_size)
+void check_ply_structure(const std::string& filename, std::uintmax_t file_size, std::string& normalized,
+                         std::vector<std::string>& notes)
 {
+  normalized.clear();
   std::ifstream in(filename, std::ios::binary);
   std::string line;
   int format = -1; // 0 ascii, 1 little endian, 2 big endian
@@ -358,12 +497,22 @@ void check_ply_structure(const std::string& filename, std::uintmax_t file_size)
 
   if(format == 0)
   {
+    // values the header does not list at the end of element lines: cut off
+    std::istringstream fixed;
+    std::size_t data_start = 0;
+    const bool cut = cut_extra_ply_values(in, elements, normalized, data_start, notes);
+    if(cut)
+    {
+      fixed.str(normalized);
+      fixed.seekg(std::streamoff(data_start));
+    }
+    std::istream& data = cut ? static_cast<std::istream&>(fixed) : in;
     std::string token;
     for(const Ply_element& e : elements)
       for(long long item = 0; item < e.count; ++item)
         for(const Ply_property& p : e.properties)
         {
-          if(!(in >> token)) truncated(e, item);
+          if(!(data >> token)) truncated(e, item);
           if(!p.list)
           {
             if(p.is_float && is_non_finite_token(token) && (e.name == "vertex" || e.name == "vertices"))
@@ -379,7 +528,7 @@ void check_ply_structure(const std::string& filename, std::uintmax_t file_size)
           if(n < 0 || n > max || std::uintmax_t(n) > file_size) bad_list(e, item, token);
           for(long long k = 0; k < n; ++k)
           {
-            if(!(in >> token)) truncated(e, item);
+            if(!(data >> token)) truncated(e, item);
             if(!is_ply_ascii_token(token, p.is_float))
               cannot_read(filename, "'" + e.name.substr(0, 30) + "' element " + std::to_string(item) +
                                     " has an invalid list value '" + token.substr(0, 30) + "'");
@@ -438,14 +587,57 @@ inline bool is_known_obj_keyword(const std::string& s)
   return false;
 }
 
-// Names what CGAL's OBJ reader would refuse, before it does: a
-// non-finite coordinate, an unknown statement, no face at all.
-void check_obj_structure(const std::string& filename)
+// The statements of an OBJ file: its lines, where a line ending with a
+// backslash goes on with the next (the OBJ format's line continuation, which
+// CGAL's reader does not know; a comment does not go on). `continued`
+// counts the lines joined so.
+class Obj_statements
 {
-  std::ifstream in(filename, std::ios::binary);
+public:
+  explicit Obj_statements(const std::string& filename) : in_(filename, std::ios::binary) {}
+  // The next statement and the number of its first line; false at the end.
+  bool next(std::string& statement, long long& number)
+  {
+    statement.clear();
+    number = number_ + 1;
+    std::string line;
+    while(std::getline(in_, line))
+    {
+      ++number_;
+      const std::size_t last = line.find_last_not_of(" \t\r");
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      const bool comment = statement.empty() && first != std::string::npos && line[first] == '#';
+      if(comment || last == std::string::npos || line[last] != '\\')
+      {
+        statement += line;
+        return true;
+      }
+      statement += line.substr(0, last);
+      statement += ' ';
+      ++continued;
+    }
+    return !statement.empty();
+  }
+  long long continued = 0;
+
+private:
+  std::ifstream in_;
+  long long number_ = 0;
+};
+
+// Names what CGAL's OBJ reader would refuse, before it does: a
+// non-finite coordinate, an unknown statement, no face at all. Where the
+// file has line continuations or polylines (`l`, which CGAL's reader
+// refuses; like points, `p`, which it skips, they have no place in a
+// surface), `normalized` gets its statements, one a line, without the
+// polylines.
+void check_obj_structure(const std::string& filename, std::string& normalized, std::vector<std::string>& notes)
+{
+  normalized.clear();
+  Obj_statements statements(filename);
   std::string line, keyword, token;
-  long long vertex = 0, faces = 0;
-  for(long long number = 1; std::getline(in, line); ++number)
+  long long vertex = 0, faces = 0, polylines = 0, points = 0, number = 0;
+  while(statements.next(line, number))
   {
     std::istringstream words(line);
     if(!(words >> keyword)) continue;
@@ -456,11 +648,30 @@ void check_obj_structure(const std::string& filename)
       ++vertex;
     }
     else if(keyword == "f") ++faces;
+    else if(keyword == "l") ++polylines;
+    else if(keyword == "p") ++points;
     else if(!is_known_obj_keyword(keyword))
       cannot_read(filename, "line " + std::to_string(number) + ": unsupported OBJ statement '" +
                             keyword.substr(0, 30) + "'");
   }
-  if(faces == 0) fail("ERROR_EMPTY_MESH", quoted(filename) + " has no faces");
+  const std::string ignored = std::to_string(polylines) + " polyline ('l') and " + std::to_string(points) +
+                              " point ('p') statements ignored";
+  if(faces == 0)
+    fail("ERROR_EMPTY_MESH", quoted(filename) + " has no faces" +
+                             (polylines + points > 0 ? " (" + ignored + ")" : std::string()));
+  if(statements.continued > 0)
+    notes.push_back(std::to_string(statements.continued) +
+                    " lines of the OBJ file end with a backslash: joined with the next line");
+  if(polylines + points > 0) notes.push_back("OBJ file: " + ignored);
+  if(statements.continued == 0 && polylines == 0) return; // CGAL reads the file as it is
+  Obj_statements again(filename);
+  while(again.next(line, number))
+  {
+    std::istringstream words(line);
+    if(words >> keyword && keyword == "l") continue;
+    normalized += line;
+    normalized += '\n';
+  }
 }
 
 } // namespace detail

@@ -78,6 +78,72 @@ Mesh::Edge_index first_parallel_edge(const Mesh& mesh)
 } // namespace
 
 
+void triangle_corner_halfedges(const std::vector<File_point>& points,
+                               const std::vector<std::vector<std::size_t>>& triangles, const Mesh& mesh,
+                               const Input_report& report, std::vector<std::array<Mesh::Halfedge_index, 3>>& corners)
+{
+  corners.assign(triangles.size(), {Mesh::null_halfedge(), Mesh::null_halfedge(), Mesh::null_halfedge()});
+  if(!report.repaired)
+  {
+    for(std::size_t t = 0; t < triangles.size() && t < num_faces(mesh); ++t)
+      for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(Mesh::Face_index(Mesh::size_type(t))), mesh))
+        for(std::size_t k = 0; k < 3 && k < triangles[t].size(); ++k)
+          if(long(std::size_t(mesh.target(h))) == report.point_vertex[triangles[t][k]]) corners[t][k] = h;
+    return;
+  }
+  // each face by its corners' positions (sorted), and a face halfedge at each position
+  using Key = std::array<Point_3, 3>;
+  std::multimap<Key, Mesh::Face_index> face_at;
+  std::map<Point_3, Mesh::Halfedge_index> halfedge_at;
+  for(Mesh::Face_index f : faces(mesh))
+  {
+    Key key;
+    std::size_t k = 0;
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    {
+      if(k < 3) key[k] = mesh.point(mesh.target(h));
+      ++k;
+      halfedge_at.emplace(mesh.point(mesh.target(h)), h);
+    }
+    if(k != 3) continue;
+    std::sort(key.begin(), key.end());
+    face_at.emplace(key, f);
+  }
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if(triangles[t].size() != 3) continue;
+    Key p;
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const File_point& q = points[triangles[t][k]];
+      p[k] = Point_3(q.x(), q.y(), q.z());
+    }
+    Key key = p;
+    std::sort(key.begin(), key.end());
+    // the face at these positions, in the triangle's orientation if there is one
+    Mesh::Face_index face;
+    const auto range = face_at.equal_range(key);
+    for(auto it = range.first; it != range.second; ++it)
+    {
+      const Mesh::Halfedge_index h = mesh.halfedge(it->second);
+      if(face == Mesh::null_face()) face = it->second;
+      for(std::size_t k = 0; k < 3; ++k)
+        if(mesh.point(mesh.target(h)) == p[k] && mesh.point(mesh.target(mesh.next(h))) == p[(k + 1) % 3])
+          face = it->second;
+    }
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      if(face != Mesh::null_face())
+      {
+        for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
+          if(mesh.point(mesh.target(h)) == p[k]) corners[t][k] = h;
+      }
+      else if(const auto it = halfedge_at.find(p[k]); it != halfedge_at.end())
+        corners[t][k] = it->second;
+    }
+  }
+}
+
 const std::vector<std::string>& input_error_statuses()
 {
   static const std::vector<std::string> names = {"ERROR_CANNOT_READ", "ERROR_EMPTY_MESH",
@@ -99,8 +165,10 @@ void read_input_mesh(const std::string& filename, Mesh& mesh, Input_report& repo
 {
   std::vector<File_point> file_points;
   std::vector<std::vector<std::size_t>> polygons;
-  detail::read_soup(filename, file_points, polygons);
+  std::vector<std::string> notes; // what the reading fixed, first in the warnings
+  detail::read_soup(filename, file_points, polygons, notes);
   mesh_from_polygon_soup(file_points, std::move(polygons), detail::quoted(filename), mesh, report);
+  report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
 }
 
 void mesh_from_polygon_soup(const std::vector<File_point>& file_points, std::vector<std::vector<std::size_t>> polygons,

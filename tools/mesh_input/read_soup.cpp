@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <sstream>
 #include <unordered_map>
 
 namespace mesh_input {
@@ -46,14 +47,16 @@ inline void check_file(const std::string& filename, std::uintmax_t& size)
 }
 
 // Polygon soup of the file, as CGAL reads it, with every index checked.
-void read_soup(const std::string& filename, std::vector<File_point>& points, std::vector<Polygon>& polygons)
+void read_soup(const std::string& filename, std::vector<File_point>& points, std::vector<Polygon>& polygons,
+               std::vector<std::string>& notes)
 {
   std::uintmax_t size = 0;
   check_file(filename, size);
   const std::string ext = lower_extension(filename);
-  if(ext == "off") check_off_structure(filename, size);
-  else if(ext == "ply") check_ply_structure(filename, size);
-  else if(ext == "obj") check_obj_structure(filename);
+  std::string normalized; // the text CGAL reads instead of the file, if not empty
+  if(ext == "off") check_off_structure(filename, size, normalized, notes);
+  else if(ext == "ply") check_ply_structure(filename, size, normalized, notes);
+  else if(ext == "obj") check_obj_structure(filename, normalized, notes);
   else if(ext != "stl")
     cannot_read(filename, "unsupported file extension '" + ext.substr(0, 20) + "' (expected .obj, .off, .ply or .stl)");
 
@@ -62,7 +65,16 @@ void read_soup(const std::string& filename, std::vector<File_point>& points, std
   bool ok = false;
   try
   {
-    ok = CGAL::IO::read_polygon_soup(filename, points, soup, CGAL::parameters::verbose(false));
+    if(normalized.empty())
+      ok = CGAL::IO::read_polygon_soup(filename, points, soup, CGAL::parameters::verbose(false));
+    else
+    {
+      polygon_size_limit() = normalized.size();
+      std::istringstream text(normalized);
+      if(ext == "off") ok = CGAL::IO::read_OFF(text, points, soup, CGAL::parameters::verbose(false));
+      else if(ext == "ply") ok = CGAL::IO::read_PLY(text, points, soup, CGAL::parameters::verbose(false));
+      else ok = CGAL::IO::read_OBJ(text, points, soup, CGAL::parameters::verbose(false));
+    }
   }
   catch(const Polygon_too_large&)
   {
