@@ -23,8 +23,9 @@ enum class Inner_solver
   /// projected Newton: one factorization of the projected Hessian per iteration
   NEWTON,
   /// the projected Hessian factorized at a few iterates only, with L-BFGS
-  /// updates on top of the last factorization in between: fewer
-  /// factorizations (about half), more iterations (2-4 times)
+  /// updates on top of the last factorization in between: more iterations
+  /// (2-4 times); fewer factorizations on meshes of thousands of faces, not
+  /// always on small ones
   PROXY_QUASI_NEWTON
 };
 

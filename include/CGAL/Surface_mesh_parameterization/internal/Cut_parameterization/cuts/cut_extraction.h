@@ -1,4 +1,4 @@
-// Turns the discontinuity field v into seam paths (METHOD.md, "Cut
+// Turns the discontinuity field v into seam paths (the manual, "Cut
 // extraction"): patches of faces with v < 1/2; in each patch a path of mesh
 // edges found by Dijkstra searches on the patch's edge graph (near-linear,
 // no all-pairs search); paths shorter than a fraction of the longest dropped.

@@ -1,7 +1,7 @@
 // The v-step of the Ambrosio–Tortorelli alternation: with the UVs fixed the
 // energy is quadratic in the per-face field v, minimized by one SPD solve
 //   (diag(A_f (λ_f/(4ε) + Ψ_f)) + λ ε ℓ² L) v = (λ_f A_f / (4ε))_f
-// (METHOD.md, with ε and λ relative to the mean edge length ℓ). L is the
+// (the manual, "The Method", with ε and λ relative to the mean edge length ℓ). L is the
 // dual face Laplacian, w_e = λ_e |e| / |c_f - c_g| across every edge that is
 // interior to the cut mesh. The pattern is fixed for a cut mesh, so the
 // symbolic factorization is done once.
