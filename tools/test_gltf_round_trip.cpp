@@ -8,18 +8,24 @@
 // CUT_PARAM_GLTF_VALIDATOR_DIR, installed there by
 // scripts/install_gltf_validator.sh): that test fails when the validator
 // cannot run, and is skipped when the build turns it off
-// (-DCUT_PARAM_GLTF_VALIDATOR=OFF).
+// (-DCUT_PARAM_GLTF_VALIDATOR=OFF). Every output format that --help lists
+// (tools/output_formats.h) is written, by -o's extension and by --format, and
+// reads back with texture coordinates.
 //   UV_UNWRAP=<uv_unwrap executable> test_gltf_round_trip
 #include <tiny_gltf.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -295,6 +301,117 @@ TEST_P(Gltf_round_trip, khronos_validator_accepts_the_output)
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, Gltf_round_trip, ::testing::Values("gltf", "glb"));
+
+// The standard output of a shell command.
+std::string output_of(const std::string& command)
+{
+  std::string out;
+  if(FILE* pipe = popen(command.c_str(), "r"))
+  {
+    char buffer[4096];
+    for(std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+    pclose(pipe);
+  }
+  return out;
+}
+
+// The formats --help lists for --format ("format of the outputs: obj, ply, gltf or glb (default: ..."),
+// which uv_unwrap builds from its table (tools/output_formats.h).
+std::vector<std::string> listed_formats()
+{
+  std::string help = output_of("\"" + uv_unwrap_program + "\" --help");
+  const std::string lead = "format of the outputs: ";
+  const std::size_t from = help.find(lead);
+  if(from == std::string::npos) return {};
+  std::string list = help.substr(from + lead.size(), help.find(" (default", from) - from - lead.size());
+  if(const std::size_t o = list.rfind(" or "); o != std::string::npos) list.replace(o, 4, ", ");
+  std::vector<std::string> names;
+  for(std::size_t at = 0; at <= list.size();)
+  {
+    const std::size_t comma = std::min(list.find(", ", at), list.size());
+    names.push_back(list.substr(at, comma - at));
+    at = comma + 2;
+  }
+  return names;
+}
+
+// True if `file` reads back as a mesh with texture coordinates in the format of its extension.
+::testing::AssertionResult reads_back_with_uvs(const fs::path& file)
+{
+  const std::string extension = file.extension().string();
+  if(!fs::exists(file)) return ::testing::AssertionFailure() << file << " was not written";
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if(extension == ".obj")
+  {
+    if(text.find("\nvt ") != std::string::npos && text.find("\nf ") != std::string::npos &&
+       text.find('/', text.find("\nf ")) != std::string::npos)
+      return ::testing::AssertionSuccess();
+  }
+  else if(extension == ".ply")
+  {
+    if(text.rfind("ply\n", 0) == 0 && text.find("property list uchar float texcoord") != std::string::npos)
+      return ::testing::AssertionSuccess();
+  }
+  else if(extension == ".gltf" || extension == ".glb")
+  {
+    const tinygltf::Model m = load(file.string());
+    for(const tinygltf::Mesh& mesh : m.meshes)
+      for(const tinygltf::Primitive& p : mesh.primitives)
+        if(p.attributes.count("TEXCOORD_0")) return ::testing::AssertionSuccess();
+  }
+  else
+    return ::testing::AssertionFailure() << "no read-back check for the format of " << file << " in this test";
+  return ::testing::AssertionFailure() << file << " has no texture coordinates";
+}
+
+// Every output format of uv_unwrap's table, chosen by -o's extension and by --format: each has a writer
+// and its extension is recognized; its file reads back with UVs. A format that needs a glTF input (the
+// mesh input is refused) is written from a glTF input.
+TEST(Output_formats, each_format_is_written_and_read_back)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  const std::vector<std::string> names = listed_formats();
+  ASSERT_GE(names.size(), 2u) << "no format list in uv_unwrap --help";
+  const fs::path dir = fs::temp_directory_path() / "cut_param_output_formats";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string mesh = (dir / "grid.obj").string(), gltf = (dir / "two.gltf").string();
+  {
+    std::ofstream out(mesh);
+    const int n = 4;
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) out << "v " << i << " " << j << " " << 0.1 * (i * i + j * j) / n << "\n";
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
+        out << "f " << a << " " << b << " " << d << "\nf " << a << " " << d << " " << c << "\n";
+      }
+  }
+  tinygltf::Model model = two_primitives();
+  ASSERT_TRUE(tinygltf::TinyGLTF().WriteGltfSceneToFile(&model, gltf, false, true, true, false));
+  const std::string program = "\"" + uv_unwrap_program + "\" ";
+  for(const std::string& name : names)
+  {
+    SCOPED_TRACE("format " + name);
+    ASSERT_FALSE(name.empty());
+    const fs::path by_extension = dir / ("by_extension." + name);
+    std::string input = mesh;
+    if(exit_status(program + "\"" + mesh + "\" -q -o \"" + by_extension.string() + "\"") != 0)
+    {
+      input = gltf;
+      EXPECT_EQ(exit_status(program + "\"" + gltf + "\" -q -o \"" + by_extension.string() + "\""), 0)
+        << "neither a mesh nor a glTF input gives a ." << name << " output";
+    }
+    EXPECT_TRUE(reads_back_with_uvs(by_extension));
+    const fs::path by_option = dir / name;
+    EXPECT_EQ(exit_status(program + "\"" + input + "\" -q --format " + name + " --output-dir \"" +
+                          by_option.string() + "\""), 0);
+    EXPECT_TRUE(reads_back_with_uvs(by_option / (fs::path(input).stem().string() + "_uv." + name)));
+  }
+  fs::remove_all(dir);
+}
 
 } // namespace
 

@@ -9,6 +9,7 @@
 #include "gltf_io.h"
 #include "mesh_input.h"
 #include "mesh_output.h"
+#include "output_formats.h"
 #include "seam_constraints.h"
 #include "unwrap_run.h"
 #include "uv_unwrap_options.h"
@@ -229,68 +230,89 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
 
 // ---------------------------------------------------------------- run
 
-bool is_gltf(const std::string& input)
-{
-  const std::string extension = mesh_input::lower_extension(input);
-  return extension == "gltf" || extension == "glb";
-}
+} // namespace
 
-// Writes the unwrapped mesh as `format`. An OBJ read without repair keeps
-// the input's other lines (tools/mesh_output.h); other inputs get the
-// library's plain OBJ writer.
-template <typename UVMap>
-void write_output(const std::string& output, const std::string& format, const std::string& input,
-                  const mesh_input::Input_report& report, const Mesh& mesh, const UVMap& uvmap,
-                  std::vector<std::string>& warnings)
+// The writers of tools/output_formats.h's rows.
+struct output_formats::Written
+{
+  const std::string& input;
+  const mesh_input::Input_report* report;  // the mesh's; null for a glTF input
+  const Mesh* mesh;                        // null for a glTF input
+  const Mesh::Property_map<halfedge_descriptor, Point_2>* uvmap;
+  std::vector<std::string>& warnings;
+  gltf_io::Document* doc;                  // the glTF input's, UVs set; null for a mesh
+};
+
+// An OBJ read without repair keeps the input's other lines (tools/mesh_output.h);
+// other inputs get the library's plain OBJ writer.
+void output_formats::write_obj(const std::string& output, Written& w)
 {
   bool written = false;
-  if(format == "gltf" || format == "glb")
-    throw Failure("glTF output needs a glTF input (for other inputs: .obj or .ply)");
-  if(format == "ply")
-    written = mesh_output::write_ply_with_texcoords(output, mesh, uvmap);
-  else if(mesh_input::lower_extension(input) == "obj" && !report.face_origin.empty())
+  if(mesh_input::lower_extension(w.input) == "obj" && !w.report->face_origin.empty())
   {
     std::string problem;
-    written = mesh_output::write_obj_keeping_input(input, output, mesh, uvmap, report.face_origin, problem);
+    written = mesh_output::write_obj_keeping_input(w.input, output, *w.mesh, *w.uvmap, w.report->face_origin, problem);
     if(!written)
     {
-      const std::string w = "the input's normals, groups and materials are not kept: " + problem;
-      std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
-      warnings.push_back(w);
+      const std::string warning = "the input's normals, groups and materials are not kept: " + problem;
+      std::cerr << "uv_unwrap: warning: " << printable_text(warning) << std::endl;
+      w.warnings.push_back(warning);
     }
   }
-  else if(format == "obj" && mesh_input::lower_extension(input) == "obj")
+  else if(mesh_input::lower_extension(w.input) == "obj")
   {
-    const std::string w = "the input was repaired: the output has the repaired mesh's numbering, without the "
-                          "input's normals, groups and materials";
-    std::cerr << "uv_unwrap: warning: " << printable_text(w) << std::endl;
-    warnings.push_back(w);
+    const std::string warning = "the input was repaired: the output has the repaired mesh's numbering, without the "
+                                "input's normals, groups and materials";
+    std::cerr << "uv_unwrap: warning: " << printable_text(warning) << std::endl;
+    w.warnings.push_back(warning);
   }
-  if(!written && format == "obj") written = SMP::write_OBJ_with_uvs(output, mesh, uvmap);
+  if(!written) written = SMP::write_OBJ_with_uvs(output, *w.mesh, *w.uvmap);
   if(!written) throw Failure("cannot write '" + output + "'", "ERROR_CANNOT_WRITE");
 }
 
-// The output file of `input` (stem `stem`): -o, else <stem>_uv.<format> in
-// --output-dir. The format is --format, else -o's extension, else the
-// input's (OBJ for OFF and STL, which have no texture coordinates).
-std::string output_format(const Options& options, const std::string& input)
+void output_formats::write_ply(const std::string& output, Written& w)
 {
-  if(!options.output_format.empty()) return options.output_format;
+  if(!mesh_output::write_ply_with_texcoords(output, *w.mesh, *w.uvmap))
+    throw Failure("cannot write '" + output + "'", "ERROR_CANNOT_WRITE");
+}
+
+void output_formats::write_gltf(const std::string& output, Written& w)
+{
+  if(!w.doc) throw Failure("glTF output needs a glTF input (for other inputs: " + list(".", Inputs::mesh) + ")");
+  gltf_io::save(*w.doc, output);
+}
+
+namespace {
+
+// A glTF input: its extension is that of a format written from the glTF document.
+bool is_gltf(const std::string& input)
+{
+  const output_formats::Output_format* f = output_formats::find(mesh_input::lower_extension(input));
+  return f && f->needs_gltf_input;
+}
+
+// The output format of `input`'s run (a row of tools/output_formats.h): --format, else -o's
+// extension, else the input's (the first row, OBJ, for OFF and STL, which have no texture coordinates).
+const output_formats::Output_format& output_format(const Options& options, const std::string& input)
+{
+  if(!options.output_format.empty())
+    if(const output_formats::Output_format* f = output_formats::find(options.output_format)) return *f;
   const std::string from = !options.output.empty() ? options.output : input;
   std::string extension = fs::path(from).extension().string();
   for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if(extension == ".ply") return "ply";
-  if(extension == ".gltf") return "gltf";
-  if(extension == ".glb") return "glb";
-  if(extension == ".obj" || options.output.empty()) return "obj";
-  throw Failure("cannot tell the format of '" + options.output + "' (give .obj, .ply, .gltf or .glb, or --format)");
+  if(!extension.empty())
+    if(const output_formats::Output_format* f = output_formats::find(extension.substr(1))) return *f;
+  if(options.output.empty()) return output_formats::table[0];
+  throw Failure("cannot tell the format of '" + options.output + "' (give " + output_formats::list(".") +
+                ", or --format)");
 }
 
-std::string output_file(const Options& options, const std::string& stem, const std::string& format)
+// The output file of a run on `stem`: -o, else <stem>_uv.<format> in --output-dir.
+std::string output_file(const Options& options, const std::string& stem, const output_formats::Output_format& format)
 {
   if(!options.output.empty()) return options.output;
   const fs::path dir = options.output_dir.empty() ? fs::path() : fs::path(options.output_dir);
-  return (dir / (stem + "_uv." + format)).string();
+  return (dir / (stem + "_uv." + std::string(format.name))).string();
 }
 
 // The file a mesh was read from, for the constraints given in its numbering.
@@ -401,7 +423,8 @@ void repair_primitive(const std::string& name, const gltf_io::Triangles& t, Mesh
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),
 // into its own atlas; the statistics add up the primitives (E_d weighted by
 // area, E_s from the summed seam length and area, as METHOD.md defines them).
-void run_gltf(const Options& options, const std::string& input, const std::string& output, Run_summary& summary)
+void run_gltf(const Options& options, const std::string& input, const output_formats::Output_format& format,
+              const std::string& output, Run_summary& summary)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   gltf_io::Document doc;
@@ -532,7 +555,8 @@ void run_gltf(const Options& options, const std::string& input, const std::strin
   if(interrupted) throw Failure("interrupted", "ERROR_CANCELED");
   try
   {
-    gltf_io::save(doc, output);
+    output_formats::Written written{input, nullptr, nullptr, nullptr, summary.warnings, &doc};
+    format.write(output, written);
   }
   catch(const gltf_io::Gltf_error& e)
   {
@@ -553,10 +577,11 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
     summary.input = input;
     if(!options.save_seams_file.empty()) throw Failure("--save-seams needs a mesh file (OBJ, OFF, PLY or STL)");
     const std::string stem = fs::path(input).stem().string();
-    const std::string format = output_format(options, input);
-    if(format != "gltf" && format != "glb")
-      throw Failure("a glTF input gives a glTF output (.gltf or .glb), not " + format);
-    run_gltf(options, input, output_file(options, stem, format), summary);
+    const output_formats::Output_format& format = output_format(options, input);
+    if(!format.needs_gltf_input)
+      throw Failure("a glTF input gives a glTF output (" + output_formats::list(".", output_formats::Inputs::gltf) +
+                    "), not " + std::string(format.name));
+    run_gltf(options, input, format, output_file(options, stem, format), summary);
     return;
   }
   Mesh mesh;
@@ -581,7 +606,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
     stem = "spherical_cap";
     for(std::size_t v = 0; v < num_vertices(mesh); ++v) report.point_vertex.push_back(long(v));
   }
-  const std::string format = output_format(options, input);
+  const output_formats::Output_format& format = output_format(options, input);
   const std::string output = output_file(options, stem, format);
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);
@@ -598,7 +623,8 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the
   // input.
-  write_output(output, format, summary.input, report, mesh, uvmap, summary.warnings);
+  output_formats::Written written{summary.input, &report, &mesh, &uvmap, summary.warnings, nullptr};
+  format.write(output, written);
   summary.output = output;
   write_pictures(options, mesh, seams, uvmap, v_field, summary, stem);
   if(!options.save_seams_file.empty() &&

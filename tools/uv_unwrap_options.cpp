@@ -4,6 +4,8 @@
 // name the value and what was expected.
 #include "uv_unwrap_options.h"
 
+#include "output_formats.h"
+
 #include "options/cli_options.h"
 
 #include <CLI/CLI.hpp>
@@ -105,17 +107,21 @@ bool parse_arguments(int argc, char** argv, Options& options)
 
   const std::string output = "Output";
   app.add_option("-o,--output", options.output,
-                 "output file, one input only; its extension (.obj or .ply)\n"
+                 "output file, one input only; its extension (" +
+                   output_formats::list(".", output_formats::Inputs::mesh) + ")\n"
                  "gives the format (default: <input name>_uv.<ext> in --output-dir)")
     ->type_name("FILE")->group(output);
   app.add_option("--output-dir", options.output_dir, "folder of the outputs (default: the current directory;\n"
                                                       "created if missing)")
     ->type_name("DIR")->group(output);
+  std::vector<std::string> format_names;
+  for(const output_formats::Output_format& f : output_formats::table) format_names.emplace_back(f.name);
   app.add_option("--format", options.output_format,
-                 "format of the outputs: obj, ply, gltf or glb (default: that of\n"
-                 "-o, else of the input; obj for .off and .stl inputs; a glTF\n"
-                 "input gives gltf or glb)")
-    ->type_name("FMT")->check(CLI::IsMember({"obj", "ply", "gltf", "glb"}))->group(output);
+                 "format of the outputs: " + output_formats::list() + " (default: that of\n"
+                 "-o, else of the input; " + std::string(output_formats::table[0].name) +
+                 " for .off and .stl inputs; a glTF\n"
+                 "input gives " + output_formats::list("", output_formats::Inputs::gltf) + ")")
+    ->type_name("FMT")->check(CLI::IsMember(format_names))->group(output);
   app.add_option("--uv-set", options.uv_set,
                  "glTF: write the UVs to TEXCOORD_<N>, e.g. 1 for a lightmap set\n"
                  "beside the material's (default 0); the sets below N must exist")

@@ -27,7 +27,7 @@ struct Options
   std::vector<std::string> inputs; // files and directories; empty: the built-in default mesh
   std::string output;         // one input only; empty: <input stem>_uv.<ext> in output_dir
   std::string output_dir;     // empty: the current directory
-  std::string output_format;  // obj, ply, gltf or glb; empty: the input's (obj for off and stl)
+  std::string output_format;  // a name of tools/output_formats.h; empty: the input's (obj for off and stl)
   std::string stats;          // one input only
   int uv_set = 0;              // glTF: the UVs go to TEXCOORD_<uv_set>
   std::string jsonl;          // one line of statistics per input ("-": stdout)
