@@ -16,6 +16,8 @@
 //
 //   UV_UNWRAP=<uv_unwrap executable> test_reader_inputs
 #include "generators.h"
+#include "tests/gltf_test_files.h"
+#include "tests/uv_unwrap_runs.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -31,12 +33,12 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 using cut_test::Soup;
+using namespace uv_unwrap_test;
 
 std::string uv_unwrap_program;
 
@@ -45,32 +47,6 @@ fs::path work_directory()
   const fs::path dir = fs::temp_directory_path() / "cut_param_reader_inputs";
   fs::create_directories(dir);
   return dir;
-}
-
-int exit_status(const std::string& command)
-{
-  const int status = std::system(command.c_str());
-  return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-/// uv_unwrap with its defaults on `input`, written to `output`; returns its
-/// statistics (--stats) and sets `status` to its exit status.
-nlohmann::json unwrap(const fs::path& input, const fs::path& output, int& status)
-{
-  const fs::path stats = output.string() + ".json";
-  fs::remove(stats);
-  status = exit_status("\"" + uv_unwrap_program + "\" \"" + input.string() + "\" -q -o \"" + output.string() +
-                       "\" --stats \"" + stats.string() + "\"");
-  std::ifstream in(stats);
-  return nlohmann::json::parse(in, nullptr, false);
-}
-
-/// True if a warning of `stats` holds `text`.
-bool warned(const nlohmann::json& stats, const std::string& text)
-{
-  for(const auto& w : stats["warnings"])
-    if(w.get<std::string>().find(text) != std::string::npos) return true;
-  return false;
 }
 
 /// Unwraps `input` and checks a valid atlas of `faces` faces with a warning
@@ -83,28 +59,12 @@ nlohmann::json expect_valid_atlas(const fs::path& input, const std::string& outp
     ADD_FAILURE() << "set UV_UNWRAP to the uv_unwrap executable";
     return {};
   }
-  int status = -1;
   const fs::path output = input.parent_path() / (input.stem().string() + "_uv." + output_extension);
-  const nlohmann::json stats = unwrap(input, output, status);
-  if(stats.is_discarded())
-  {
-    ADD_FAILURE() << input << ": no statistics";
-    return stats;
-  }
-  EXPECT_EQ(status, 0) << stats.dump();
-  if(stats["status"] != "ok")
-  {
-    ADD_FAILURE() << stats.dump();
-    return stats;
-  }
-  EXPECT_EQ(stats["flipped_faces"], 0);
-  EXPECT_EQ(stats["border_crossings"], 0);
-  EXPECT_EQ(stats["uv_in_unit_square"], true);
-  EXPECT_EQ(stats["faces"].get<std::size_t>(), faces) << "faces of the unwrapped mesh";
-  if(!warning.empty())
-    EXPECT_TRUE(warned(stats, warning)) << "no warning with '" << warning << "': " << stats["warnings"].dump();
+  const Unwrap_run r = run_uv_unwrap(uv_unwrap_program, input, output);
+  if(!uv_unwrap_test::expect_valid_atlas(r, input.string(), warning)) return r.stats;
+  EXPECT_EQ(r.stats["faces"].get<std::size_t>(), faces) << "faces of the unwrapped mesh";
   EXPECT_TRUE(fs::exists(output));
-  return stats;
+  return r.stats;
 }
 
 /// A wavy n x n grid (a disk, 2 n^2 triangles, normals up).
@@ -144,7 +104,7 @@ TEST(ReaderInputs, obj_face_continued_on_the_next_line)
   }
   const nlohmann::json stats = expect_valid_atlas(file, "obj", s.faces.size(), "end with a backslash: joined");
   // the output OBJ keeps the file's lines, the continued ones joined
-  EXPECT_FALSE(warned(stats, "not kept")) << stats["warnings"].dump();
+  EXPECT_FALSE(has_warning(stats, "not kept")) << stats["warnings"].dump();
 }
 
 TEST(ReaderInputs, obj_polylines_and_points_alone_have_no_faces)
@@ -157,10 +117,10 @@ TEST(ReaderInputs, obj_polylines_and_points_alone_have_no_faces)
     write_vertices(out, s, "v ");
     out << "l 1 2 3 4 5\nl 6 7\np 1 2 3\n";
   }
-  int status = -1;
-  const nlohmann::json stats = unwrap(file, work_directory() / "polylines_uv.obj", status);
+  const Unwrap_run r = run_uv_unwrap(uv_unwrap_program, file, work_directory() / "polylines_uv.obj");
+  const nlohmann::json& stats = r.stats;
   ASSERT_FALSE(stats.is_discarded());
-  EXPECT_EQ(status, 1);
+  EXPECT_EQ(r.exit_status, 1);
   EXPECT_EQ(stats["status"], "ERROR_EMPTY_MESH") << stats.dump();
   EXPECT_NE(stats["error"].get<std::string>().find("has no faces"), std::string::npos) << stats.dump();
   EXPECT_NE(stats["error"].get<std::string>().find("2 polyline ('l') and 1 point ('p')"), std::string::npos)
@@ -214,7 +174,7 @@ TEST(ReaderInputs, ply_extra_values_at_the_end_of_element_lines)
   const nlohmann::json stats =
     expect_valid_atlas(file, "obj", s.faces.size(), "'face' element lines of the PLY file (first: element 0) end with "
                                                     "values that its header does not list (up to 8 more): ignored");
-  EXPECT_TRUE(warned(stats, "'vertex' element lines")) << stats["warnings"].dump();
+  EXPECT_TRUE(has_warning(stats, "'vertex' element lines")) << stats["warnings"].dump();
 }
 
 TEST(ReaderInputs, ply_elements_over_several_lines_are_read_as_before)
@@ -224,7 +184,7 @@ TEST(ReaderInputs, ply_elements_over_several_lines_are_read_as_before)
   const fs::path file = work_directory() / "split_faces.ply";
   write_ply(s, file, false, true);
   const nlohmann::json stats = expect_valid_atlas(file, "obj", s.faces.size(), "");
-  EXPECT_FALSE(warned(stats, "PLY")) << stats["warnings"].dump();
+  EXPECT_FALSE(has_warning(stats, "PLY")) << stats["warnings"].dump();
 }
 
 // ---------------------------------------------------------------- OFF
@@ -240,47 +200,10 @@ TEST(ReaderInputs, off_counts_glued_to_the_keyword)
     out << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
   }
   const nlohmann::json stats = expect_valid_atlas(file, "obj", 12, "read as 'OFF 8'");
-  EXPECT_TRUE(warned(stats, "triangulated")) << stats["warnings"].dump();
+  EXPECT_TRUE(has_warning(stats, "triangulated")) << stats["warnings"].dump();
 }
 
 // ---------------------------------------------------------------- glTF
-
-// Appends `bytes` to buffer 0 as a view and an accessor (with bounds for
-// float data, as the validator wants for POSITION); returns the accessor.
-int add_accessor(tinygltf::Model& m, const void* data, std::size_t bytes, int component, int type, std::size_t count,
-                 int target)
-{
-  auto& buffer = m.buffers[0].data;
-  while(buffer.size() % 4) buffer.push_back(0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.size();
-  view.byteLength = bytes;
-  view.target = target;
-  const auto* p = static_cast<const unsigned char*>(data);
-  buffer.insert(buffer.end(), p, p + bytes);
-  m.bufferViews.push_back(view);
-  tinygltf::Accessor a;
-  a.bufferView = int(m.bufferViews.size()) - 1;
-  a.componentType = component;
-  a.type = type;
-  a.count = count;
-  if(component == TINYGLTF_COMPONENT_TYPE_FLOAT)
-  {
-    const int n = tinygltf::GetNumComponentsInType(std::uint32_t(type));
-    const float* x = static_cast<const float*>(data);
-    a.minValues.assign(std::size_t(n), 1e300);
-    a.maxValues.assign(std::size_t(n), -1e300);
-    for(std::size_t i = 0; i < count; ++i)
-      for(std::size_t c = 0; c < std::size_t(n); ++c)
-      {
-        a.minValues[c] = std::min(a.minValues[c], double(x[i * std::size_t(n) + c]));
-        a.maxValues[c] = std::max(a.maxValues[c], double(x[i * std::size_t(n) + c]));
-      }
-  }
-  m.accessors.push_back(a);
-  return int(m.accessors.size()) - 1;
-}
 
 /// A primitive of `mode` over `points` (float positions, normals up), with
 /// 16-bit `indices` (none if empty).
@@ -332,41 +255,6 @@ tinygltf::Model new_model()
   return m;
 }
 
-tinygltf::Model load(const fs::path& file)
-{
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model m;
-  std::string err, warn;
-  const bool ok = file.extension() == ".glb" ? loader.LoadBinaryFromFile(&m, &err, &warn, file.string())
-                                             : loader.LoadASCIIFromFile(&m, &err, &warn, file.string());
-  EXPECT_TRUE(ok) << err;
-  return m;
-}
-
-// Element i of a float accessor.
-std::vector<float> floats(const tinygltf::Model& m, int accessor, std::size_t i)
-{
-  const tinygltf::Accessor& a = m.accessors[std::size_t(accessor)];
-  const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
-  const int n = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
-  const std::size_t stride = v.byteStride ? v.byteStride : std::size_t(n) * 4;
-  std::vector<float> out(static_cast<std::size_t>(n));
-  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset + i * stride,
-              out.size() * 4);
-  return out;
-}
-
-// The indices of an output primitive (32-bit, as uv_unwrap writes them).
-std::vector<std::uint32_t> indices_of(const tinygltf::Model& m, const tinygltf::Primitive& p)
-{
-  const tinygltf::Accessor& a = m.accessors[std::size_t(p.indices)];
-  EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-  const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
-  std::vector<std::uint32_t> out(a.count);
-  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset, a.count * 4);
-  return out;
-}
-
 using Triangle = std::array<std::array<float, 3>, 3>; // corner positions
 
 /// The output's primitive `k`: a list of triangles (mode 4) whose corners
@@ -384,15 +272,15 @@ void expect_triangle_list(const tinygltf::Model& out, std::size_t k, const std::
   ASSERT_TRUE(p.attributes.count("TEXCOORD_0"));
   ASSERT_GE(p.indices, 0);
   const int pos = p.attributes.at("POSITION"), uv = p.attributes.at("TEXCOORD_0");
-  const std::vector<std::uint32_t> idx = indices_of(out, p);
+  const std::vector<std::uint32_t> idx = primitive_indices(out, p);
   ASSERT_EQ(idx.size(), 3 * expected.size());
   for(std::size_t t = 0; t < expected.size(); ++t)
   {
     std::array<std::vector<float>, 3> x, u;
     for(std::size_t c = 0; c < 3; ++c)
     {
-      x[c] = floats(out, pos, idx[3 * t + c]);
-      u[c] = floats(out, uv, idx[3 * t + c]);
+      x[c] = accessor_floats(out, pos, idx[3 * t + c]);
+      u[c] = accessor_floats(out, uv, idx[3 * t + c]);
       EXPECT_EQ(x[c], std::vector<float>(expected[t][c].begin(), expected[t][c].end())) << "triangle " << t;
       EXPECT_TRUE(u[c][0] >= 0.f && u[c][0] <= 1.f && u[c][1] >= 0.f && u[c][1] <= 1.f) << "triangle " << t;
     }
@@ -419,22 +307,8 @@ protected:
     EXPECT_TRUE(writer.WriteGltfSceneToFile(&m, input.string(), false, true, true, false));
     const nlohmann::json stats = expect_valid_atlas(input, GetParam(), faces, warning);
     output = dir / (name + "_uv." + GetParam());
-    validate();
-    return load(output);
-  }
-
-  void validate()
-  {
-    const std::string script = CUT_PARAM_GLTF_VALIDATOR_SCRIPT, validator_dir = CUT_PARAM_GLTF_VALIDATOR_DIR;
-    if(script.empty()) return; // -DCUT_PARAM_GLTF_VALIDATOR=OFF
-    const std::string validate =
-      "GLTF_VALIDATOR_DIR=\"" + validator_dir + "\" node \"" + script + "\" \"" + output.string() + "\"";
-    const int status = exit_status(validate);
-    ASSERT_NE(status, 2) << validate << ": the validator cannot run; install it with "
-                         << "scripts/install_gltf_validator.sh " << validator_dir
-                         << " (node and npm needed), or configure with -DCUT_PARAM_GLTF_VALIDATOR=OFF";
-    ASSERT_NE(status, 127) << validate << ": node is not installed (Debian: nodejs)";
-    EXPECT_EQ(status, 0) << validate << ": errors, or warnings not allowed in tools/tests/validate_gltf.js";
+    expect_validator_accepts(output);
+    return load_gltf(output);
   }
 
   fs::path output;
@@ -495,12 +369,12 @@ TEST_P(Gltf_readers, faces_dropped_by_the_repair_keep_their_place)
   // the reversed copy of triangle 10 has its UVs, corner by corner
   ASSERT_EQ(out.meshes.size(), 1u);
   const tinygltf::Primitive& p = out.meshes[0].primitives[0];
-  const std::vector<std::uint32_t> idx = indices_of(out, p);
+  const std::vector<std::uint32_t> idx = primitive_indices(out, p);
   ASSERT_EQ(idx.size(), 3 * s.faces.size());
   const int uv = p.attributes.at("TEXCOORD_0");
   const std::size_t twin = s.faces.size() - 1;
   for(std::size_t k = 0; k < 3; ++k)
-    EXPECT_EQ(floats(out, uv, idx[3 * twin + k]), floats(out, uv, idx[3 * 10 + 2 - k])) << "corner " << k;
+    EXPECT_EQ(accessor_floats(out, uv, idx[3 * twin + k]), accessor_floats(out, uv, idx[3 * 10 + 2 - k])) << "corner " << k;
 }
 
 TEST_P(Gltf_readers, triangle_strip_is_read_with_its_winding)

@@ -9,6 +9,7 @@
 // where no face is left gets the error's name.
 //
 //   UV_UNWRAP=<uv_unwrap executable> test_wild_inputs
+#include "tests/uv_unwrap_runs.h"
 #include "wild_input_generators.h"
 
 #include <nlohmann/json.hpp>
@@ -20,12 +21,12 @@
 #include <fstream>
 #include <string>
 
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace cut_test;
+using namespace uv_unwrap_test;
 
 std::string uv_unwrap_program;
 
@@ -36,20 +37,13 @@ fs::path work_directory()
   return dir;
 }
 
-/// uv_unwrap with its defaults on `soup` written as NAME.obj; returns its
-/// statistics (--stats) and sets `exit_status`.
-nlohmann::json unwrap(const Soup& soup, const std::string& name, int& exit_status)
+/// uv_unwrap with its defaults on `soup` written as NAME.obj.
+Unwrap_run unwrap(const Soup& soup, const std::string& name)
 {
   const fs::path dir = work_directory();
-  const fs::path input = dir / (name + ".obj"), output = dir / (name + "_uv.obj"), stats = dir / (name + ".json");
-  fs::remove(stats);
+  const fs::path input = dir / (name + ".obj");
   EXPECT_TRUE(write_obj(soup, input.string()));
-  const std::string command = "\"" + uv_unwrap_program + "\" \"" + input.string() + "\" -q -o \"" + output.string() +
-                              "\" --stats \"" + stats.string() + "\"";
-  const int status = std::system(command.c_str());
-  exit_status = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(stats);
-  return nlohmann::json::parse(in, nullptr, false);
+  return run_uv_unwrap(uv_unwrap_program, input, dir / (name + "_uv.obj"));
 }
 
 /// Unwraps `soup` and checks a valid atlas of at least `charts` charts,
@@ -62,30 +56,12 @@ nlohmann::json expect_valid_atlas(const Soup& soup, const std::string& name, std
     ADD_FAILURE() << "set UV_UNWRAP to the uv_unwrap executable";
     return {};
   }
-  int exit_status = -1;
-  const nlohmann::json stats = unwrap(soup, name, exit_status);
-  if(stats.is_discarded())
-  {
-    ADD_FAILURE() << name << ": no statistics";
-    return stats;
-  }
-  EXPECT_EQ(exit_status, 0) << stats.dump();
-  if(stats["status"] != "ok")
-  {
-    ADD_FAILURE() << stats.dump();
-    return stats;
-  }
-  EXPECT_EQ(stats["flipped_faces"], 0);
-  EXPECT_EQ(stats["border_crossings"], 0);
-  EXPECT_EQ(stats["uv_in_unit_square"], true);
-  EXPECT_GE(stats["charts"].get<std::size_t>(), charts);
-  EXPECT_TRUE(stats["distortion"].is_number());
-  if(stats["distortion"].is_number()) EXPECT_GE(stats["distortion"].get<double>(), 4. - 1e-9);
-  if(warning.empty()) return stats;
-  bool warned = false;
-  for(const auto& w : stats["warnings"]) warned = warned || w.get<std::string>().find(warning) != std::string::npos;
-  EXPECT_TRUE(warned) << "no warning with '" << warning << "': " << stats["warnings"].dump();
-  return stats;
+  const Unwrap_run r = unwrap(soup, name);
+  if(!uv_unwrap_test::expect_valid_atlas(r, name, warning)) return r.stats;
+  EXPECT_GE(r.stats["charts"].get<std::size_t>(), charts);
+  EXPECT_TRUE(r.stats["distortion"].is_number());
+  if(r.stats["distortion"].is_number()) EXPECT_GE(r.stats["distortion"].get<double>(), 4. - 1e-9);
+  return r.stats;
 }
 
 TEST(WildInputs, quads_folded_over_a_common_diagonal)
@@ -140,10 +116,10 @@ TEST(WildInputs, no_face_left_is_an_error_with_its_name)
   soup.add_point(1., 0., 0.);
   soup.add_triangle(0, 1, 1);
   soup.add_triangle(1, 0, 0);
-  int exit_status = -1;
-  const nlohmann::json stats = unwrap(soup, "no_face_left", exit_status);
+  const Unwrap_run r = unwrap(soup, "no_face_left");
+  const nlohmann::json& stats = r.stats;
   ASSERT_FALSE(stats.is_discarded());
-  EXPECT_EQ(exit_status, 1);
+  EXPECT_EQ(r.exit_status, 1);
   EXPECT_EQ(stats["status"], "ERROR_EMPTY_MESH") << stats.dump();
 }
 
