@@ -5,12 +5,15 @@
 // and the paper's Table 1.
 // --optcuts (optcuts_comparison.h): the OptCuts meshes at equal distortion
 // against OptCuts' time, E_d and E_s.
+// --hard-surface (hard_surface.h): generated CAD-like meshes and CGAL's,
+// Newton iterations per phase.
 // --scaling (scaling.h): time, memory and where the time goes as the mesh
 // grows, up to 640k faces.
 //
 // Run with --help for the options.
 
 #include "comparison.h"
+#include "hard_surface.h"
 #include "optcuts_comparison.h"
 #include "options.h"
 #include "scaling.h"
@@ -26,5 +29,6 @@ int main(int argc, char** argv)
   cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();
   if(opt.scaling) return cut_benchmark::run_scaling(opt);
+  if(opt.hard_surface) return cut_benchmark::run_hard_surface(opt);
   return opt.optcuts ? cut_benchmark::run_optcuts_comparison(opt) : cut_benchmark::run_comparison(opt);
 }

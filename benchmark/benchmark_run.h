@@ -44,6 +44,10 @@ struct Run_result
   std::size_t newton = 0, charts = 0, flipped = 0, crossings = 0;
   std::size_t factorizations = 0, solves = 0; // of the inner solver (every phase)
   std::size_t u_factorizations = 0, u_solves = 0, v_factorizations = 0; // of the alternation's u- and v-steps
+  // Newton iterations per phase: alternation (u-steps), final solves without box, box solves, relaxations
+  // judging trials; the rest of `newton` is the first u-steps' and the rerouted seams' solves
+  std::size_t u_newton = 0, final_newton = 0, box_newton = 0, relax_newton = 0;
+  std::size_t welded = 0;      // vertices welded to a colocal one
   double distortion = NaN, seam_length = NaN, coverage = NaN;
   bool bound_met = true;       // distortion_bound_met (true without a bound)
   std::string note;
@@ -127,6 +131,11 @@ void run_method(Mesh& mesh, int repeat, const NamedParameters& np, Run_result& o
   out.u_factorizations = first.alternation_factorizations;
   out.u_solves = first.alternation_solves;
   out.v_factorizations = first.v_step_factorizations;
+  out.u_newton = first.alternation_newton_iterations;
+  out.final_newton = first.final_solve_newton_iterations;
+  out.box_newton = first.box_newton_iterations;
+  out.relax_newton = first.relax_newton_iterations;
+  out.welded = first.number_of_welded_vertices;
   out.charts = first.number_of_charts;
   out.distortion = first.distortion;
   out.seam_length = first.seam_length;

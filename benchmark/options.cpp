@@ -39,6 +39,18 @@ const char* const description =
 
 } // namespace
 
+/// An option of the default mode given with --hard-surface (reported).
+static bool misplaced_hard_surface(const std::vector<CLI::Option*>& options)
+{
+  for(CLI::Option* o : options)
+    if(o->count() > 0 && o->get_name() != "--csv")
+    {
+      std::cerr << "error: " << o->get_name() << " does not apply to --hard-surface\n";
+      return true;
+    }
+  return false;
+}
+
 int parse_options(int argc, char** argv, Options& opt)
 {
   opt.mesh_dir = project_root() / ".." / "shared" / "meshes";
@@ -116,6 +128,17 @@ int parse_options(int argc, char** argv, Options& opt)
       }, ""))
     ->group(optcuts);
 
+  const std::string hard = "Hard-surface corpus (--hard-surface)";
+  app.add_flag("--hard-surface", opt.hard_surface,
+               "run the hard-surface corpus instead: generated CAD-like meshes\n"
+               "(gears, plates with holes, brackets, cylinders) and CGAL's CAD-like\n"
+               "meshes; Newton iterations per phase (--meshes, --csv, --repeat,\n"
+               "--max-faces and the method's options apply)")->group(hard);
+  app.add_option("--write-meshes", opt.write_meshes_dir,
+                 "with --hard-surface: write each mesh of the corpus as\n"
+                 "DIR/<name>.obj instead of running it (for\n"
+                 "scripts/blender_smart_uv_comparison.sh)")
+    ->type_name("DIR")->group(hard);
   app.add_flag("--scaling", opt.scaling, "run the scaling benchmark instead of the comparison")->group(scaling);
   scaling_only.push_back(app.add_option("--max-faces", opt.max_faces,
                                         "leave out meshes of more than N faces (default: none left out)")
@@ -156,6 +179,13 @@ int parse_options(int argc, char** argv, Options& opt)
   if((other_method || opt.given_option("lambda")) && app.count("--baseline") == 0) opt.baseline_file.clear();
   if(other_method && app.count("--baseline-frontier") == 0) opt.frontier_file.clear();
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
+  if(opt.hard_surface && (opt.optcuts || opt.scaling))
+  {
+    std::cerr << "error: --hard-surface, --optcuts and --scaling are separate modes\n";
+    return 2;
+  }
+  if(!opt.write_meshes_dir.empty() && !opt.hard_surface) { std::cerr << "error: --write-meshes needs --hard-surface\n"; return 2; }
+  if(opt.hard_surface) return misplaced_hard_surface(comparison_only) ? 2 : 0;
   // an option of another mode than the one run
   auto misplaced = [](const std::vector<CLI::Option*>& options, const std::string& why) {
     for(CLI::Option* o : options)

@@ -61,6 +61,10 @@ struct Options
   bool optcuts = false;
   std::optional<double> optcuts_bound; // empty: each mesh under the E_d OptCuts reached
 
+  // --hard-surface
+  bool hard_surface = false;
+  fs::path write_meshes_dir;           // empty: the corpus is not written
+
   // --scaling
   bool scaling = false;
   std::optional<std::size_t> max_faces; // empty: no limit

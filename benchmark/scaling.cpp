@@ -107,6 +107,8 @@ bool read_mesh(const fs::path& file, Mesh& mesh)
   }
 }
 
+} // namespace
+
 /// A file of CGAL's data set: through CGAL_DATA_DIR (CGAL::data_file_path())
 /// when it is set, else in the data/ folder that the build extracts next to
 /// bin/. Empty if not found.
@@ -124,6 +126,8 @@ fs::path cgal_data_file(const std::string& name)
   const fs::path p = exe.parent_path().parent_path() / "data" / name;
   return is_file(p) ? p : fs::path();
 }
+
+namespace {
 
 /// The meshes of the run, smallest first within each source (`elephant`:
 /// CGAL's mesh, empty if not found); what cannot be run is reported in `notes`.

@@ -17,7 +17,14 @@
 
 #include "options.h"
 
+#include <string>
+
 namespace cut_benchmark {
+
+/// A file of CGAL's data set: through CGAL_DATA_DIR (CGAL::data_file_path())
+/// when it is set, else in the data/ folder that the build extracts next to
+/// bin/. Empty if not found.
+fs::path cgal_data_file(const std::string& name);
 
 /// Prints the table (and writes --json); returns the exit status.
 int run_scaling(const Options& opt);

@@ -68,6 +68,7 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
   j["vertices"] = s.vertices;
   j["faces"] = s.faces;
   j["degenerate_faces"] = s.result.number_of_degenerate_faces;
+  j["welded_vertices"] = s.result.number_of_welded_vertices;
   j["charts"] = s.result.number_of_charts;
   j["seam_edges"] = s.result.number_of_seam_edges;
   j["seam_length"] = number(s.result.seam_length);

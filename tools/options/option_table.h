@@ -81,6 +81,9 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "factorization)")                                                                                                \
   X(reject_degenerate_faces, FLAG, "--reject-degenerate-faces", "reject_degenerate_faces", "reject_degenerate_faces", \
     0., false, 1., "", "Method", "fail with ERROR_DEGENERATE_FACE on degenerate faces instead of clamping them")   \
+  X(weld_colocal_vertices, INVERTED_FLAG, "--no-weld", "no_weld", "no_weld", 0., false, 1., "", "Method",           \
+    "keep vertices at the same position apart (each piece of a mesh exported with split normals its own chart) "  \
+    "instead of unwrapping them as one vertex")                                                                     \
   X(global_injectivity, INVERTED_FLAG, "--allow-overlaps", "allow_overlaps", "allow_overlaps", 0., false, 1., "",   \
     "Texture atlas", "let a chart overlap itself (no border barrier; charts still packed apart)")                    \
   X(texture_size, COUNT, "--texture-size", "texture_size", "texture_size", 1., false, 1e6, "", "Texture atlas",     \

@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_result.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/atlas_validity.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/colocal_vertices.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
@@ -42,6 +43,23 @@ void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)
     if(surface.twin[fe] < 0)
       put(uvmap, opposite(surface.face_edge_halfedge(fe), mesh), uv(fe));
+}
+
+/// After welding (mesh/colocal_vertices.h): the input's border halfedges
+/// across the face-edges `glued` get the UV of the corner at their target,
+/// and their edges the seam flag of the edge they were glued into.
+template <typename TriangleMesh, typename Surface, typename HalfedgeUVMap, typename SeamEdgeMap>
+void write_glued_outputs(const TriangleMesh& mesh, const Surface& surface, const std::vector<int>& glued,
+                         const Map_state& state, HalfedgeUVMap uvmap, SeamEdgeMap seam_edge_map)
+{
+  using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
+  for(int fe : glued)
+  {
+    const int i = state.corner_uv[std::size_t(fe)];
+    const auto h = surface.face_edge_halfedge(fe);
+    put(uvmap, opposite(h, mesh), Point_2(state.x[2*i], state.x[2*i+1]));
+    put(seam_edge_map, edge(h, mesh), bool(state.is_cut[std::size_t(surface.edge_of[std::size_t(fe)])]));
+  }
 }
 
 /// No `forbidden_seam_edge_map` given: nothing is forbidden.
@@ -111,6 +129,9 @@ void fill_statistics(const Surface& surface, const Map_state& state, const Work_
   result.alternation_newton_iterations = log.u_step_work.iterations;
   result.alternation_factorizations = log.u_step_work.factorizations;
   result.alternation_solves = log.u_step_work.solves;
+  result.final_solve_newton_iterations = log.final_work.iterations;
+  result.box_newton_iterations = log.box_work.iterations;
+  result.relax_newton_iterations = log.relax_work.iterations;
   result.v_step_factorizations = log.v_step_factorizations;
   result.number_of_degenerate_faces = state.degenerate_faces;
   result.initial_distortion = state.initial_distortion;
@@ -289,6 +310,17 @@ void fill_statistics(const Surface& surface, const Map_state& state, const Work_
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{weld_colocal_vertices}
+///     \cgalParamDescription{`true`: vertices closer than 1e-6 times the bounding box diagonal
+///       are one vertex of the unwrapping, and border edges that then join the same two
+///       vertices (in opposite directions, no third edge between them) one interior edge, so
+///       that a mesh exported with split normals or UV islands is unwrapped as the surface
+///       it stands for; the outputs stay per halfedge of `mesh` (such a glued border edge
+///       may be a seam). Welds that would pinch a vertex or collapse a face are not made;
+///       `false`: each piece is unwrapped as it comes}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the positions of the vertices (converted to `double`)}
 ///     \cgalParamType{a `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -387,7 +419,8 @@ void fill_statistics(const Surface& surface, const Map_state& state, const Work_
 ///   no two UV border segments cross (with `global_injectivity`), every UV lies
 ///   in [0,1]² (unless `world_units`) with charts at least `padding` texels
 ///   apart,
-///   every seam edge is an edge of the mesh that is not on its boundary and
+///   every seam edge is an edge of the mesh that is not on its boundary (or, with
+///   `weld_colocal_vertices`, a border edge glued to a colocal one) and
 ///   not flagged in `forbidden_seam_edge_map`, and
 ///   cutting along the seams leaves every connected component a topological
 ///   disk (checked by assertions in debug builds)
@@ -422,6 +455,10 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   if(indexing != OK) return finish(indexing);
   result.number_of_isolated_vertices = surface.isolated_vertices;
   const Cut_parameterization_options options = cut_parameterization_options_from(np);
+  std::vector<int> glued; // face-edges joined by welding, whose input edges were on the border
+  if(options.weld_colocal_vertices)
+    result.number_of_welded_vertices =
+      ic::weld_colocal_vertices(surface, ic::tuning::colocal_vertex_tolerance, glued);
   if(options.reject_degenerate_faces &&
      ic::number_of_degenerate_faces(surface) > 0)
     return finish(ERROR_DEGENERATE_FACE);
@@ -447,6 +484,7 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
 
   ic::write_corner_uvs(mesh, surface, state, uvmap);
   ic::write_seams(surface, state, seam_edge_map);
+  ic::write_glued_outputs(mesh, surface, glued, state, uvmap, seam_edge_map);
   auto v_map = choose_parameter(get_parameter(np, internal_np::face_discontinuity_map), ic::Ignored_face_map());
   for(std::size_t f = 0; f < surface.number_of_faces(); ++f) put(v_map, surface.faces[f], state.v.size() ? state.v[f] : 1.);
   ic::fill_statistics(surface, state, log, packing, result);

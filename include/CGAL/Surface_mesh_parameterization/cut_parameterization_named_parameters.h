@@ -77,6 +77,9 @@ CGAL_SMP_CUT_NAMED_PARAMETER(progress_callback_t, progress_callback)
 CGAL_SMP_CUT_NAMED_PARAMETER(minimum_relative_cut_length_t, minimum_relative_cut_length)
 /// true: refuse degenerate faces with ERROR_DEGENERATE_FACE instead of clamping them (default false).
 CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
+/// true: vertices at the same position (within 1e-6 of the bounding box diagonal) are one vertex of the
+/// unwrapping (default true).
+CGAL_SMP_CUT_NAMED_PARAMETER(weld_colocal_vertices_t, weld_colocal_vertices)
 /// Above twice this many faces the cuts are decided on a simplified copy (int >= 0, default 10000; 0: never).
 CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
 /// Inner solver of the distortion minimizations (`Inner_solver`, default `Inner_solver::NEWTON`).

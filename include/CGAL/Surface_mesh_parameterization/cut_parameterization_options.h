@@ -62,6 +62,7 @@ struct Cut_parameterization_options
   int multiresolution_faces = 10000;      ///< above this many faces the first u-step runs on a simplified copy (0: never)
   Inner_solver inner_solver = Inner_solver::NEWTON; ///< the inner solver of every minimization
   bool reject_degenerate_faces = false;   ///< refuse degenerate faces instead of clamping them
+  bool weld_colocal_vertices = true;      ///< vertices at one position are one vertex of the unwrapping
   // the atlas
   bool global_injectivity = true;         ///< no chart overlaps itself or another
   int texture_size = 1024;                ///< texels per side of the texture (the padding's scale)
@@ -172,7 +173,7 @@ void read_named_parameter(const NamedParameters& np, Tag tag, Field& field)
 ///       parameter of `cut_and_parameterize()`: `distortion_bound`, `epsilon_start`,
 ///       `epsilon_end`, `iterations_per_epsilon`, `gamma`, `number_of_passes`,
 ///       `minimum_relative_cut_length`, `number_of_iterations`, `multiresolution_faces`,
-///       `inner_solver`, `reject_degenerate_faces`, `global_injectivity`, `texture_size`,
+///       `inner_solver`, `reject_degenerate_faces`, `weld_colocal_vertices`, `global_injectivity`, `texture_size`,
 ///       `padding`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
 ///       `bounding_box_distortion_budget`, `progress_callback` (their types and ranges are in
 ///       the table of `cut_and_parameterize()`)}
@@ -220,6 +221,7 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, internal_np::multiresolution_faces, o.multiresolution_faces);
   read_named_parameter(np, internal_np::inner_solver, o.inner_solver);
   read_named_parameter(np, internal_np::reject_degenerate_faces, o.reject_degenerate_faces);
+  read_named_parameter(np, internal_np::weld_colocal_vertices, o.weld_colocal_vertices);
   read_named_parameter(np, internal_np::global_injectivity, o.global_injectivity);
   read_named_parameter(np, internal_np::texture_size, o.texture_size);
   read_named_parameter(np, internal_np::padding, o.padding);

@@ -49,6 +49,15 @@ struct Cut_and_parameterize_result
   /// the part of `newton_iterations` spent in the alternation's u-steps (the
   /// rest: the final solves, the trials of splits and zips)
   std::size_t alternation_newton_iterations = 0;
+  /// the part of `newton_iterations` spent in final solves without box (the
+  /// trials' of the splits and of the bound search included)
+  std::size_t final_solve_newton_iterations = 0;
+  /// the part of `newton_iterations` spent in the box's solves (trials' included)
+  std::size_t box_newton_iterations = 0;
+  /// the part of `newton_iterations` spent relaxing maps that judge trial
+  /// cuts and zips (the rest, beside these three and the alternation's: the
+  /// first u-steps' and the rerouted seams' solves)
+  std::size_t relax_newton_iterations = 0;
   /// the part of `number_of_factorizations` spent in the alternation's u-steps
   std::size_t alternation_factorizations = 0;
   /// the part of `number_of_solves` spent in the alternation's u-steps
@@ -58,6 +67,7 @@ struct Cut_and_parameterize_result
   std::size_t v_step_factorizations = 0;
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV
+  std::size_t number_of_welded_vertices = 0;   ///< vertices merged into a colocal one (`weld_colocal_vertices`)
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)

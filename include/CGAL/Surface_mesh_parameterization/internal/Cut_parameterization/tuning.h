@@ -19,6 +19,8 @@ namespace tuning {
 // mesh/Chart_mesh.h
 /// Relative height (and first side) below which a face's rest shape is clamped as degenerate: no NaN from needles.
 constexpr double degenerate_ratio = 1e-4;
+/// Vertices closer than this times the bounding box diagonal are welded (weld_colocal_vertices).
+constexpr double colocal_vertex_tolerance = 1e-6;
 
 // energy/symmetric_dirichlet.h, first_collapse_time()
 /// Leading coefficient below this fraction of the largest: the collapse equation is solved as linear.

@@ -69,7 +69,7 @@ inline Error_code final_minimization(const Final_solve_args& args, bool injectiv
   const double tolerance = stiffness > 0. ? args.box.tolerance
                            : (injective || boxed ? tuning::constrained_tolerance : tuning::final_tolerance);
   const Newton_report report = minimizer.minimize(state.x, args.max_iterations, tolerance);
-  log.count(report);
+  (stiffness > 0. ? log.box_work : log.final_work) += log.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 

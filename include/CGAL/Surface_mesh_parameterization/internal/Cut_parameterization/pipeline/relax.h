@@ -72,7 +72,7 @@ inline Error_code relax_charts(int iterations, double tolerance, Inner_solver so
   Distortion_minimizer minimizer(solved_mesh, std::vector<double>(solved_mesh.number_of_faces(), 1.), false, 0., 0.,
                                  solver);
   const Newton_report report = minimizer.minimize(y, iterations, tolerance);
-  log.count(report);
+  log.relax_work += log.count(report);
   if(whole) s.x = y;
   else
     for(std::size_t v = 0; v < full_vertex.size(); ++v)
@@ -88,7 +88,7 @@ inline Error_code relax_map(int iterations, double tolerance, Inner_solver solve
 {
   Distortion_minimizer minimizer(s.chart, std::vector<double>(s.chart.number_of_faces(), 1.), false, 0., 0., solver);
   const Newton_report report = minimizer.minimize(s.x, iterations, tolerance);
-  log.count(report);
+  log.relax_work += log.count(report);
   s.distortion = mean_distortion(s.chart, s.x);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }

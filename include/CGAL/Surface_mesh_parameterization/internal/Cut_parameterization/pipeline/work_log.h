@@ -54,6 +54,9 @@ struct Work_log
 {
   Solver_counts work;               // of every minimization of the UVs
   Solver_counts u_step_work;        // the part of `work` spent in the alternation's u-steps
+  Solver_counts final_work;         // the part spent in final solves without box (trials' included)
+  Solver_counts box_work;           // the part spent in the box's solves (trials' included)
+  Solver_counts relax_work;         // the part spent relaxing maps to judge trial cuts and zips
   std::size_t v_step_factorizations = 0; // of the v-steps' systems, one per v-step (not in `work`)
   Joint_timings timings;
 
@@ -72,6 +75,9 @@ struct Work_log
   {
     work += other.work;
     u_step_work += other.u_step_work;
+    final_work += other.final_work;
+    box_work += other.box_work;
+    relax_work += other.relax_work;
     v_step_factorizations += other.v_step_factorizations;
     timings.add(other.timings);
   }
