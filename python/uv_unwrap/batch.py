@@ -37,7 +37,7 @@ OUTPUT_FORMAT = {".obj": "obj", ".ply": "ply", ".off": "obj", ".stl": "obj", ".g
 RECORDS = "batch.jsonl"
 # failures that may pass another time: redone by a rerun (the others are the input's own)
 TRANSIENT = {"ERROR_TIMEOUT", "ERROR_KILLED", "ERROR_OUT_OF_MEMORY", "ERROR_WORKER_LOST", "ERROR_CANCELED",
-             "ERROR_INTERNAL"}
+             "ERROR_CANNOT_WRITE", "ERROR_INTERNAL"}
 
 
 # ------------------------------------------------------------------ options

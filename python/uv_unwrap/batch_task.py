@@ -95,19 +95,8 @@ def _outcome(returncode, stdout, stderr, job):
     return record
 
 
-def unwrap_task(job):
-    """Runs on a worker: uv_unwrap on job["input"] in a child process; returns the input's record.
-    The input's failures are in the record; an exception here is the worker's own trouble."""
-    global _libc
-    if _libc is None:
-        import ctypes
-        with contextlib.suppress(OSError):
-            _libc = ctypes.CDLL(None, use_errno=True)
-    start = time.monotonic()
-    program = job["program"]
-    if not (os.path.isfile(program) and os.access(program, os.X_OK)):
-        program = find_program(None)  # another machine: its own uv_unwrap
-    output = job["output"]
+def _run(program, job, output):
+    """uv_unwrap on the input, its output written into a temporary folder, then published."""
     temporary = _temporary_folder(output)
     try:
         target = os.path.join(temporary, os.path.basename(output))
@@ -125,8 +114,28 @@ def unwrap_task(job):
             record = {"status": "ERROR_TIMEOUT", "error": "uv_unwrap took more than --timeout %g s" % job["timeout"]}
         if record["status"] == "ok":
             _publish(temporary, output)
+        return record
     finally:
         shutil.rmtree(temporary, ignore_errors=True)
+
+
+def unwrap_task(job):
+    """Runs on a worker: uv_unwrap on job["input"] in a child process; returns the input's record.
+    The input's failures are in the record; an exception here is the worker's own trouble."""
+    global _libc
+    if _libc is None:
+        import ctypes
+        with contextlib.suppress(OSError):
+            _libc = ctypes.CDLL(None, use_errno=True)
+    start = time.monotonic()
+    program = job["program"]
+    if not (os.path.isfile(program) and os.access(program, os.X_OK)):
+        program = find_program(None)  # another machine: its own uv_unwrap
+    output = job["output"]
+    try:
+        record = _run(program, job, output)
+    except OSError as e:  # the output's folder: not writable, full, ...
+        record = {"status": "ERROR_CANNOT_WRITE", "error": "%s: %s" % (output, e)}
     record.update(input=job["input"], output=output if record["status"] == "ok" else None,
                   worker=_worker_name(), batch_seconds=round(time.monotonic() - start, 6))
     return record
