@@ -84,7 +84,10 @@ def _outcome(returncode, stdout, stderr, job):
     with contextlib.suppress(ValueError, IndexError):
         record = json.loads(lines[-1])
     if returncode < 0:
-        name = signal.Signals(-returncode).name if -returncode in signal.Signals._value2member_map_ else str(-returncode)
+        try:
+            name = signal.Signals(-returncode).name
+        except ValueError:
+            name = "signal %d" % -returncode
         memory = " (under --memory-limit %d bytes: out of memory?)" % job["memory_limit"] if job["memory_limit"] else ""
         return {"status": "ERROR_KILLED", "error": "uv_unwrap was killed by %s%s" % (name, memory)}
     if not isinstance(record, dict) or "status" not in record:
