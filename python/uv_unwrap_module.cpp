@@ -1,5 +1,6 @@
-// The Python module uv_unwrap: cut_and_parameterize() on numpy arrays
-// (the arguments: unwrap_arguments.h; the result: unwrap_result.h).
+// The compiled part of the Python package uv_unwrap (uv_unwrap._uv_unwrap,
+// whose names uv_unwrap/__init__.py exports): cut_and_parameterize() on
+// numpy arrays (the arguments: unwrap_arguments.h; the result: unwrap_result.h).
 //
 //   import uv_unwrap
 //   r = uv_unwrap.unwrap(V, F)        # V (n,3) floats, F (m,3) vertex indices
@@ -267,7 +268,7 @@ Result unwrap(const py::object& V_object, const py::object& F_object,
 
 } // namespace
 
-PYBIND11_MODULE(uv_unwrap, m)
+PYBIND11_MODULE(_uv_unwrap, m)
 {
   m.doc() = "Automatic UV unwrapping: seams and UV map optimized together (Ambrosio-Tortorelli method).";
 

@@ -8,7 +8,8 @@
 # libopenblas0-pthread: the BLAS behind CHOLMOD on large meshes (Debian's
 # reference BLAS would make its supernodal factorization several times slower).
 # python3-dev, python3-pybind11, python3-numpy, python3-pytest: the Python
-# module uv_unwrap (python/) and its tests.
+# module uv_unwrap (python/) and its tests; python3-distributed (Dask) and
+# python3-tqdm (its progress bar): the batch, python3 -m uv_unwrap.batch.
 # --with-blender (scripts/test.sh): also Debian's blender, for the add-on's
 # test (blender/; measured: 165 packages, 167 MB downloaded, 632 MB on disk),
 # and xvfb, a virtual X server for the test of its modal path (4 packages, 6 MB).
@@ -16,7 +17,8 @@ set -euo pipefail
 
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libsuitesparse-dev libmetis-dev libtbb-dev
           libopenblas0-pthread libcgal-demo libstb-dev doxygen libcli11-dev nlohmann-json3-dev libgtest-dev
-          libtinygltf-dev python3-dev python3-pybind11 python3-numpy python3-pytest)
+          libtinygltf-dev python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed
+          python3-tqdm)
 if [ "${1:-}" = "--with-blender" ]; then
   packages+=(blender xvfb xauth)
 elif [ $# -gt 0 ]; then
