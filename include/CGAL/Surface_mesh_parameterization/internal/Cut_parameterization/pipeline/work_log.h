@@ -54,7 +54,7 @@ struct Work_log
 {
   Solver_counts work;               // of every minimization of the UVs
   Solver_counts u_step_work;        // the part of `work` spent in the alternation's u-steps
-  std::size_t v_step_factorizations = 0; // of the v-steps' systems, one per v-step (not in `work`)
+  std::size_t v_step_factorizations = 0; // v-steps solved by a factorization (the conjugate gradient did not converge; not in `work`)
   Joint_timings timings;
 
   /// Adds the work of one minimization (a Newton_report); returns it.
