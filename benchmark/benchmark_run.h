@@ -82,6 +82,7 @@ inline std::string parameters_text(const Options& opt)
      << ", box aspect ratio " << fixed(o.bounding_box_aspect_ratio_value(), 3)
      << " stiffness " << fixed(o.bounding_box_stiffness_value(), 1) << (o.global_injectivity ? "" : ", overlaps allowed")
      << (o.inner_solver == SMP::Inner_solver::NEWTON ? "" : ", inner solver proxy quasi-Newton")
+     << (o.preset == SMP::Preset::FAST ? ", preset fast" : "")
      << "; time: median of " << opt.repeat_count() << " run" << (opt.repeat_count() > 1 ? "s" : "");
   return os.str();
 }

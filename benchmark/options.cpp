@@ -89,7 +89,7 @@ int parse_options(int argc, char** argv, Options& opt)
                                                      "bounding_box_stiffness", "global_injectivity"},
                                                     comparison))
     comparisons.push_back(o);
-  cut_options::add_cli_options(app, opt.given, {"multiresolution_faces", "inner_solver"});
+  cut_options::add_cli_options(app, opt.given, {"multiresolution_faces", "inner_solver", "preset"});
   app.add_option("--repeat", opt.repeat,
                  "runs per mesh; the time reported is their median (default 1;\n"
                  "with --scaling 3, for meshes up to " + std::to_string(SCALING_REPEAT_MAX_FACES) + " faces)")

@@ -674,3 +674,69 @@ TYPED_TEST(MetricsTyped, overlap_area_of_folds_and_of_a_valid_fan)
   EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv), 0.25, 1.5 * 3. / 1024.); // its perimeter times a cell side
   EXPECT_NEAR(SMP::uv_overlap_area(mesh, uv, 257), 0.25, 1.5 * 3. / 257.);
 }
+
+TEST(Metrics, overlap_area_scan_agrees_with_a_test_of_every_sample)
+{
+  // the raster scans each triangle's rows between its sides, with the exact
+  // predicate near them only: the same count as testing every sample of its
+  // bounding box, on random triangles with corners on the samples' lines
+  // (rows through corners, sides through samples), far from the origin,
+  // tiny, and on fans (shared sides and corners)
+  namespace ic = CGAL::Surface_mesh_parameterization::internal::cut;
+  using Triangles = std::vector<std::array<std::array<double, 2>, 3>>;
+  auto every_sample = [](const Triangles& triangles, std::size_t n) {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for(const auto& t : triangles)
+      for(const auto& c : t)
+        for(int d = 0; d < 2; ++d) { lo[d] = (std::min)(lo[d], c[d]); hi[d] = (std::max)(hi[d], c[d]); }
+    const double h = (std::max)(hi[0] - lo[0], hi[1] - lo[1]) / double(n);
+    std::vector<int> count(n * n, 0);
+    std::size_t excess = 0;
+    for(const auto& t : triangles)
+    {
+      CGAL::Epick::Point_2 a(t[0][0], t[0][1]), b(t[1][0], t[1][1]), c(t[2][0], t[2][1]);
+      const CGAL::Orientation o = CGAL::orientation(a, b, c);
+      if(o == CGAL::COLLINEAR) continue;
+      if(o == CGAL::RIGHT_TURN) std::swap(b, c);
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t i = 0; i < n; ++i)
+          if(ic::sample_in_ccw_triangle({lo[0] + (double(i) + 0.5) * h, lo[1] + (double(j) + 0.5) * h}, a, b, c)
+             && count[j * n + i]++ > 0)
+            ++excess;
+    }
+    return double(excess) * h * h;
+  };
+  Rng rng(3);
+  std::size_t differ = 0, overlapping = 0;
+  for(int trial = 0; trial < 400; ++trial)
+  {
+    const std::size_t n = 1 + std::size_t(rng.uniform() * 24.);
+    const double offset = trial % 5 == 0 ? 1e5 : 0., scale = trial % 7 == 0 ? 1e-6 : 1.;
+    Triangles triangles;
+    if(trial % 4 == 3)
+    {
+      const int sides = 3 + trial % 7;
+      for(int k = 0; k < sides; ++k)
+      {
+        const double a0 = 6.283185307179586 * k / sides, a1 = 6.283185307179586 * (k + 1) / sides;
+        triangles.push_back({{{offset, offset},
+                              {offset + scale * std::cos(a0), offset + scale * std::sin(a0)},
+                              {offset + scale * std::cos(a1), offset + scale * std::sin(a1)}}});
+      }
+    }
+    else
+      for(int k = 0; k < 1 + trial % 6; ++k)
+      {
+        std::array<std::array<double, 2>, 3> t;
+        for(auto& c : t)
+          for(double& x : c)
+            x = offset + scale * (trial % 4 == 0 ? rng.uniform(-1., 1.) : std::floor(rng.uniform() * 2. * double(n + 1)) / (2. * double(n)));
+        triangles.push_back(t);
+      }
+    const double expected = every_sample(triangles, n);
+    if(expected > 0.) ++overlapping;
+    if(ic::overlap_area_of_triangles(triangles, n) != expected) ++differ;
+  }
+  EXPECT_EQ(differ, std::size_t(0));
+  EXPECT_GT(overlapping, std::size_t(50)); // the cases do overlap
+}

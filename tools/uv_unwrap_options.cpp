@@ -169,6 +169,8 @@ bool parse_arguments(int argc, char** argv, Options& options)
 
   bool no_box = false;
   app.add_flag("--no-box", no_box, "no bounding box at all (same as --box-stiffness 0)")->group("Texture atlas");
+  bool fast = false;
+  app.add_flag("--fast", fast, "for interactive use (same as --preset fast)")->group("Method");
 
   const std::string pictures = "Pictures";
   app.add_option("--svg", options.svg, "write the UV layout, colored by distortion, as SVG")
@@ -212,6 +214,12 @@ bool parse_arguments(int argc, char** argv, Options& options)
   {
     if(given[stiffness].value_or(0.) > 0.) throw Failure("--no-box contradicts --box-stiffness (give one of them)");
     given[stiffness] = 0.;
+  }
+  const std::size_t preset = cut_options::option_index("preset");
+  if(fast)
+  {
+    if(given[preset].value_or(1.) != 1.) throw Failure("--fast contradicts --preset (give one of them)");
+    given[preset] = 1.; // the row's choice "fast"
   }
   // the options not given stay unset: the library's rules (the default box) decide
   cut_options::apply(given, options.method);

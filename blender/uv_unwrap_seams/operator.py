@@ -62,6 +62,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
     def draw(self, context):
         layout = self.layout
         layout.use_property_split = True
+        layout.prop(self, "preset", expand=True)  # the option table's row: default | fast, as toggle buttons
         layout.prop(self, "seam_cost")
         option_table.draw_row(layout, self, option_table.BY_KEYWORD["max_distortion"])
         layout.prop(self, "hide_seams")

@@ -102,7 +102,10 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
   X(bounding_box_distortion_budget, REAL, "--box-distortion-budget", "box_distortion_budget",                        \
     "box_distortion_budget", 0., false, unbounded, "", "Texture atlas",                                              \
     "the largest E_d increase the box may cost before it is weakened, then dropped (default 0.045 for the "         \
-    "default box, no limit for a box asked for)")
+    "default box, no limit for a box asked for)")                                                                   \
+  X(preset, CHOICE, "--preset", "preset", "preset", 0., false, 1., "default|fast", "Method",                        \
+    "default: quality first; fast: for interactive use (cuts decided on a simplified copy above 5000 faces, no "    \
+    "seam rerouting, looser final tolerances, no search for the default distortion target; the same guarantees)")
 
 /// One row of the table.
 struct Option_spec
@@ -130,11 +133,13 @@ inline void assign(int& field, double x) { field = static_cast<int>(x); }
 inline void assign(bool& field, double x) { field = x != 0.; }
 inline void assign(std::optional<double>& field, double x) { field = x; }
 inline void assign(SMP::Inner_solver& field, double x) { field = static_cast<SMP::Inner_solver>(static_cast<int>(x)); }
+inline void assign(SMP::Preset& field, double x) { field = static_cast<SMP::Preset>(static_cast<int>(x)); }
 inline std::optional<double> value(double field) { return field; }
 inline std::optional<double> value(int field) { return double(field); }
 inline std::optional<double> value(bool field) { return field ? 1. : 0.; }
 inline std::optional<double> value(const std::optional<double>& field) { return field; }
 inline std::optional<double> value(SMP::Inner_solver field) { return double(static_cast<int>(field)); }
+inline std::optional<double> value(SMP::Preset field) { return double(static_cast<int>(field)); }
 } // namespace internal
 
 #define CUT_PARAM_OPTION_SPEC(FIELD, KIND, CLI, PY, BLENDER, MIN, MIN_OPEN, MAX, CHOICES, GROUP, HELP)              \

@@ -303,6 +303,15 @@ void fill_statistics(const Surface& surface, const Map_state& state, const Work_
 ///     \cgalParamType{`Inner_solver`}
 ///     \cgalParamDefault{`Inner_solver::NEWTON`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{preset}
+///     \cgalParamDescription{`Preset::FAST` for interactive use: the cuts decided on a copy
+///       simplified to about `fast_multiresolution_faces` faces (above twice that size), no
+///       rerouting of the seams, looser final tolerances, no search for the default
+///       distortion target (`with_preset()`); the same guarantees
+///       (\ref Cut_parameterization_fast_preset)}
+///     \cgalParamType{`Preset`}
+///     \cgalParamDefault{`Preset::DEFAULT`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{reject_degenerate_faces}
 ///     \cgalParamDescription{`true`: a degenerate face (height below 1e-4 times its longest
 ///       side) makes the function return `ERROR_DEGENERATE_FACE` before any work; `false`:
@@ -454,7 +463,7 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   const Error_code indexing = ic::to_error_code(ic::index_surface(mesh, ic::vertex_points(mesh, np), surface));
   if(indexing != OK) return finish(indexing);
   result.number_of_isolated_vertices = surface.isolated_vertices;
-  const Cut_parameterization_options options = cut_parameterization_options_from(np);
+  const Cut_parameterization_options options = with_preset(cut_parameterization_options_from(np));
   std::vector<int> glued; // face-edges joined by welding, whose input edges were on the border
   if(options.weld_colocal_vertices)
     result.number_of_welded_vertices =

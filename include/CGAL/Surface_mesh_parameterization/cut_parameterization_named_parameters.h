@@ -29,6 +29,19 @@ enum class Inner_solver
   PROXY_QUASI_NEWTON
 };
 
+/// \ingroup PkgCutParameterizationRef
+/// How much work a run of `cut_and_parameterize()` does: named parameter
+/// `preset`.
+enum class Preset
+{
+  /// quality first: the method as described, every stage
+  DEFAULT,
+  /// for interactive use: the cuts decided on a small simplified copy, no
+  /// rerouting of the seams, looser final tolerances, no search for the
+  /// default distortion target; the same guarantees
+  FAST
+};
+
 #define CGAL_SMP_CUT_NAMED_PARAMETER(TAG, NAME)                                          \
   namespace internal_np { enum TAG { NAME }; }                                   \
   namespace parameters {                                                                 \
@@ -84,6 +97,8 @@ CGAL_SMP_CUT_NAMED_PARAMETER(weld_colocal_vertices_t, weld_colocal_vertices)
 CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
 /// Inner solver of the distortion minimizations (`Inner_solver`, default `Inner_solver::NEWTON`).
 CGAL_SMP_CUT_NAMED_PARAMETER(inner_solver_t, inner_solver)
+/// How much work a run does (`Preset`, default `Preset::DEFAULT`; `Preset::FAST` for interactive use).
+CGAL_SMP_CUT_NAMED_PARAMETER(preset_t, preset)
 
 /// Atlas: keep every chart free of self-overlap (no crossing UV borders) with a border barrier (bool, default true).
 CGAL_SMP_CUT_NAMED_PARAMETER(global_injectivity_t, global_injectivity)
@@ -131,6 +146,11 @@ constexpr double tight_bounding_box_stiffness = 300.;
 /// increase over the same final solve without box; where the box costs more,
 /// it is weakened, then dropped (\ref Cut_parameterization_atlas_box).
 constexpr double gentle_bounding_box_distortion_budget = 0.045;
+/// \ingroup PkgCutParameterizationRef
+/// `multiresolution_faces` at most under `Preset::FAST`: the cuts of a mesh
+/// above twice this many faces are decided on a copy of about this size
+/// (measured in the manual, \ref Cut_parameterization_fast_preset).
+constexpr int fast_multiresolution_faces = 2500;
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -61,6 +62,7 @@ struct Cut_parameterization_options
   int number_of_iterations = 500;         ///< the most Newton iterations of one minimization
   int multiresolution_faces = 10000;      ///< above this many faces the first u-step runs on a simplified copy (0: never)
   Inner_solver inner_solver = Inner_solver::NEWTON; ///< the inner solver of every minimization
+  Preset preset = Preset::DEFAULT;        ///< FAST: less work for interactive use (see `with_preset()`)
   bool reject_degenerate_faces = false;   ///< refuse degenerate faces instead of clamping them
   bool weld_colocal_vertices = true;      ///< vertices at one position are one vertex of the unwrapping
   // the atlas
@@ -173,7 +175,8 @@ void read_named_parameter(const NamedParameters& np, Tag tag, Field& field)
 ///       parameter of `cut_and_parameterize()`: `distortion_bound`, `epsilon_start`,
 ///       `epsilon_end`, `iterations_per_epsilon`, `gamma`, `number_of_passes`,
 ///       `minimum_relative_cut_length`, `number_of_iterations`, `multiresolution_faces`,
-///       `inner_solver`, `reject_degenerate_faces`, `weld_colocal_vertices`, `global_injectivity`, `texture_size`,
+///       `inner_solver`, `preset`, `reject_degenerate_faces`, `weld_colocal_vertices`, `global_injectivity`,
+///       `texture_size`,
 ///       `padding`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
 ///       `bounding_box_distortion_budget`, `progress_callback` (their types and ranges are in
 ///       the table of `cut_and_parameterize()`)}
@@ -220,6 +223,7 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
   read_named_parameter(np, internal_np::multiresolution_faces, o.multiresolution_faces);
   read_named_parameter(np, internal_np::inner_solver, o.inner_solver);
+  read_named_parameter(np, internal_np::preset, o.preset);
   read_named_parameter(np, internal_np::reject_degenerate_faces, o.reject_degenerate_faces);
   read_named_parameter(np, internal_np::weld_colocal_vertices, o.weld_colocal_vertices);
   read_named_parameter(np, internal_np::global_injectivity, o.global_injectivity);
@@ -230,6 +234,23 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, internal_np::bounding_box_stiffness, o.bounding_box_stiffness);
   read_named_parameter(np, internal_np::bounding_box_distortion_budget, o.bounding_box_distortion_budget);
   read_named_parameter(np, internal_np::progress_callback, o.progress_callback);
+  return o;
+}
+
+/// \ingroup PkgCutParameterizationRef
+/// The options that a run of `cut_and_parameterize()` uses: `o` itself,
+/// except with `o.preset == Preset::FAST`, where `multiresolution_faces`
+/// (unless 0) is capped at `fast_multiresolution_faces` (2500), so that the
+/// cuts of a mesh above 5000 faces are decided on a copy simplified to about
+/// 2500 faces. The other parts of the preset (no
+/// rerouting of the seams, looser final tolerances, no search for the
+/// default distortion target) are the plan's.
+/// \pre none
+/// \post the result equals `o` unless `o.preset == Preset::FAST`
+inline Cut_parameterization_options with_preset(Cut_parameterization_options o)
+{
+  if(o.preset != Preset::FAST) return o;
+  if(o.multiresolution_faces > 0) o.multiresolution_faces = (std::min)(o.multiresolution_faces, fast_multiresolution_faces);
   return o;
 }
 

@@ -62,8 +62,9 @@ struct Cut_and_parameterize_result
   std::size_t alternation_factorizations = 0;
   /// the part of `number_of_solves` spent in the alternation's u-steps
   std::size_t alternation_solves = 0;
-  /// factorizations of the v-steps' systems, one per v-step (their symbolic
-  /// analysis is done once per pass; not counted above)
+  /// factorizations of the v-steps' systems: the v-steps whose conjugate
+  /// gradient did not converge (their symbolic analysis is done once per
+  /// pass, at the first; not counted above)
   std::size_t v_step_factorizations = 0;
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV

@@ -115,6 +115,16 @@ constexpr double refactorization_ratio = 0.1;
 /// A pair is kept only where s.y exceeds this times |s| |y|: the update stays positive definite.
 constexpr double lbfgs_curvature = 1e-10;
 
+// linalg/Pcg_or_cholesky.h (the v-step, cuts/discontinuity_field.h)
+/// Conjugate-gradient iterations before the Cholesky fallback: the v-step's matrix is nearly diagonal.
+constexpr int v_step_cg_iterations = 200;
+/// Their target residual relative to the right-hand side: v within round-off of the factorized solve's.
+constexpr double v_step_cg_tolerance = 1e-12;
+
+// ---- The fast preset (Preset::FAST; pipeline/plan.h, pipeline/final_solve.h)
+/// The final solves' Newton tolerances are multiplied by this: interactive use, the map is judged by eye.
+constexpr double fast_tolerance_factor = 10.;
+
 // ---- end of the solver section
 
 

@@ -3,6 +3,7 @@
 #ifndef CGAL_SMP_CUT_INTERNAL_VERTEX_DISTORTION_H
 #define CGAL_SMP_CUT_INTERNAL_VERTEX_DISTORTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/energy/symmetric_dirichlet.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <vector>

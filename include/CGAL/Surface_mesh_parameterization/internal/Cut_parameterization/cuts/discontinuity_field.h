@@ -3,13 +3,14 @@
 //   (diag(A_f (λ_f/(4ε) + Ψ_f)) + λ ε ℓ² L) v = (λ_f A_f / (4ε))_f
 // (the manual, "The Method", with ε and λ relative to the mean edge length ℓ). L is the
 // dual face Laplacian, w_e = λ_e |e| / |c_f - c_g| across every edge that is
-// interior to the cut mesh. The pattern is fixed for a cut mesh, so the
-// symbolic factorization is done once.
+// interior to the cut mesh. Each solve starts from the last v, by a
+// preconditioned conjugate gradient, a Cholesky factorization where that
+// does not converge (linalg/Pcg_or_cholesky.h).
 #ifndef CGAL_SMP_CUT_INTERNAL_DISCONTINUITY_FIELD_H
 #define CGAL_SMP_CUT_INTERNAL_DISCONTINUITY_FIELD_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Pcg_or_cholesky.h>
 
 #include <vector>
 
@@ -52,12 +53,15 @@ class Discontinuity_solver
   std::vector<double> area_, lambda_;
   Sparse_matrix matrix_;     // lower triangle
   std::vector<int> diagonal_slot_, edge_slot_;
-  Sparse_cholesky cholesky_;
+  Pcg_or_cholesky solver_;
 
 public:
+  /// `cg_iterations`: of the conjugate gradient of each solve before its
+  /// Cholesky fallback (0: Cholesky only).
   Discontinuity_solver(std::vector<Dual_edge> edges, std::vector<double> face_area,
-                       std::vector<double> face_lambda)
-    : edges_(std::move(edges)), area_(std::move(face_area)), lambda_(std::move(face_lambda))
+                       std::vector<double> face_lambda, int cg_iterations = tuning::v_step_cg_iterations)
+    : edges_(std::move(edges)), area_(std::move(face_area)), lambda_(std::move(face_lambda)),
+      solver_(cg_iterations)
   {
     const int n = int(area_.size());
     std::vector<Eigen::Triplet<double>> entries;
@@ -75,11 +79,12 @@ public:
     for(int f = 0; f < n; ++f) diagonal_slot_.push_back(slot(f, f));
     for(const Dual_edge& e : edges_)
       edge_slot_.push_back(slot((std::max)(e.f, e.g), (std::min)(e.f, e.g)));
-    cholesky_.analyze(matrix_);
   }
 
   /// Minimizer v of the AT energy for the given per-face distortion Ψ_f.
-  /// `epsilon` and `lambda` are relative, `mean_edge` is ℓ. False on a failed solve.
+  /// `epsilon` and `lambda` are relative, `mean_edge` is ℓ; `v` on entry is
+  /// the start of the iterative solve (the last v; any other size: 0).
+  /// False on a failed solve.
   bool solve(const std::vector<double>& distortion, double epsilon, double lambda,
              double mean_edge, Eigen::VectorXd& v)
   {
@@ -102,8 +107,11 @@ public:
       values[diagonal_slot_[e.g]] += w;
       values[edge_slot_[k]] -= w;
     }
-    return cholesky_.factorize(matrix_) && cholesky_.solve(rhs, v);
+    return solver_.solve(matrix_, rhs, v);
   }
+
+  /// Solves that fell back to a factorization.
+  std::size_t factorizations() const { return solver_.factorizations(); }
 
   const Sparse_matrix& matrix() const { return matrix_; }
 };

@@ -81,13 +81,13 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
       Scoped_timer v_step(log.timings.v_steps);
       if(!v_solver.solve(face_distortions(state.chart, state.x), eps, lambda, mean_edge, state.v))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      ++log.v_step_factorizations;
       v_step.stop();
       ++alternation;
       if(progress && !progress(progress_report("alternate", pass, alternation, alternations_per_pass(o), eps,
                                                mean_distortion(state.chart, state.x))))
         return ERROR_CANCELED;
     }
+  log.v_step_factorizations += v_solver.factorizations(); // the v-steps the conjugate gradient left to Cholesky
   Scoped_timer extraction(log.timings.cut_extraction);
   paths = extract_cut_paths(surface, state.is_cut, state.rules, state.v, o.minimum_relative_cut_length);
   return OK;

@@ -55,6 +55,7 @@ struct Final_solve_args
   int overlap_partition_faces = tuning::overlap_partition_faces;
   int max_iterations = 500;
   Inner_solver solver = Inner_solver::NEWTON;
+  double tolerance_factor = 1.; // the Newton tolerances below times this (Preset::FAST)
 };
 
 /// One Newton minimization of the final solve on the cut mesh of `state`
@@ -66,8 +67,9 @@ inline Error_code final_minimization(const Final_solve_args& args, bool injectiv
 {
   Distortion_minimizer minimizer(state.chart, std::vector<double>(state.chart.number_of_faces(), 1.), injective,
                                  stiffness > 0. ? args.box.aspect_ratio : 0., stiffness, args.solver);
-  const double tolerance = stiffness > 0. ? args.box.tolerance
-                           : (injective || boxed ? tuning::constrained_tolerance : tuning::final_tolerance);
+  const double tolerance = args.tolerance_factor
+                           * (stiffness > 0. ? args.box.tolerance
+                                             : (injective || boxed ? tuning::constrained_tolerance : tuning::final_tolerance));
   const Newton_report report = minimizer.minimize(state.x, args.max_iterations, tolerance);
   (stiffness > 0. ? log.box_work : log.final_work) += log.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;

@@ -78,6 +78,11 @@ inline Run_args default_run_args(const Cut_parameterization_options& o)
   run.final.box.budget = o.bounding_box_distortion_budget_value();
   run.final.max_iterations = o.number_of_iterations;
   run.final.solver = o.inner_solver;
+  if(o.preset == Preset::FAST)
+  {
+    run.rerouting_rings = 0;
+    run.final.tolerance_factor = tuning::fast_tolerance_factor;
+  }
   return run;
 }
 
@@ -424,7 +429,7 @@ Error_code default_target_run(const Surface& surface, const std::vector<double>&
                               const Cut_parameterization_options& o, const Progress& progress, const Run_args& run,
                               Map_state& state, Work_log& log, Packing_result& packing)
 {
-  const bool may_search = run.splits && o.number_of_passes > 0
+  const bool may_search = run.splits && o.number_of_passes > 0 && o.preset != Preset::FAST
                           && surface.number_of_faces() <= tuning::default_target_search_max_faces
                           && !(run.final.box.final_stiffness() > 0. && !std::isfinite(run.final.box.budget));
   Map_state input;

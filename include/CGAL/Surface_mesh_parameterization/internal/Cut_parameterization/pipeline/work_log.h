@@ -57,7 +57,7 @@ struct Work_log
   Solver_counts final_work;         // the part spent in final solves without box (trials' included)
   Solver_counts box_work;           // the part spent in the box's solves (trials' included)
   Solver_counts relax_work;         // the part spent relaxing maps to judge trial cuts and zips
-  std::size_t v_step_factorizations = 0; // of the v-steps' systems, one per v-step (not in `work`)
+  std::size_t v_step_factorizations = 0; // v-steps solved by a factorization (the conjugate gradient did not converge; not in `work`)
   Joint_timings timings;
 
   /// Adds the work of one minimization (a Newton_report); returns it.
