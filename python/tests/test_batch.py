@@ -257,3 +257,23 @@ def test_usage_errors_exit_2(tmp_path):
     small_caps(tmp_path / "in", 1)
     bad = run_batch([tmp_path / "in"], tmp_path / "out", "--seam-cost", "-1")
     assert bad.returncode == 2 and "--seam-cost" in bad.stderr
+
+
+def test_inputs_of_one_name_get_outputs_of_their_own(tmp_path):
+    """pig.off beside pig.stl, one name in two given folders, a file given twice: no output
+    overwrites another (checked on the names the batch gives, without a cluster)."""
+    from uv_unwrap import batch
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        for name in ("pig.off", "pig.stl", "cow.obj"):
+            (tmp_path / folder / name).write_text("")
+    given = [str(tmp_path / "a"), str(tmp_path / "b" / "pig.off"), str(tmp_path / "b" / "pig.stl"),
+             str(tmp_path / "a" / "cow.obj")]
+    pairs = batch.collect_inputs(given, str(tmp_path / "out"), None)
+    inputs = [src for src, _ in pairs]
+    outputs = [out for _, out in pairs]
+    assert len(inputs) == 5 and len(set(inputs)) == 5  # cow.obj given twice is one input
+    assert len(set(outputs)) == 5
+    assert os.path.basename(dict(pairs)[str(tmp_path / "a" / "cow.obj")]) == "cow_uv.obj"
+    assert sorted(os.path.basename(o) for o in outputs if "pig" in o) == \
+        ["pig_off_1_uv.obj", "pig_off_2_uv.obj", "pig_stl_1_uv.obj", "pig_stl_2_uv.obj"]

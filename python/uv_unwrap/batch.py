@@ -175,12 +175,15 @@ def parse_arguments(argv):
 def collect_inputs(inputs, output_dir, output_format):
     """[(input path, output path)], folders walked in name order; the output folder is left out."""
     out_root = os.path.abspath(output_dir)
-    jobs = []
+    jobs, named = [], []
 
     def add(path, relative_dir):
+        if os.path.abspath(path) in (src for src, _ in jobs):
+            return  # a file given twice is one input
         stem, extension = os.path.splitext(os.path.basename(path))
         fmt = output_format or OUTPUT_FORMAT.get(extension.lower(), "obj")
         jobs.append((os.path.abspath(path), os.path.join(output_dir, relative_dir, stem + "_uv." + fmt)))
+        named.append((relative_dir, stem, extension.lstrip(".").lower(), fmt))
 
     for given in inputs:
         if os.path.isdir(given):
@@ -198,7 +201,29 @@ def collect_inputs(inputs, output_dir, output_format):
             raise UsageError("%s: no such file or folder" % given)
     if not jobs:
         raise UsageError("no mesh files in %s (%s)" % (" ".join(inputs), " ".join(MESH_EXTENSIONS)))
-    return jobs
+    return unique_outputs(jobs, named, output_dir)
+
+
+def unique_outputs(jobs, named, output_dir):
+    """Inputs whose outputs would share a name (pig.off beside pig.stl, one name in two given folders)
+    get their extension in it, then their rank, so that no output overwrites another."""
+    def count(paths):
+        counts = {}
+        for p in paths:
+            counts[p] = counts.get(p, 0) + 1
+        return counts
+    outputs = [out for _, out in jobs]
+    clashes = count(outputs)
+    for i, (relative_dir, stem, extension, fmt) in enumerate(named):
+        if clashes[outputs[i]] > 1:
+            outputs[i] = os.path.join(output_dir, relative_dir, "%s_%s_uv.%s" % (stem, extension, fmt))
+    clashes, rank = count(outputs), {}
+    for i, (relative_dir, stem, extension, fmt) in enumerate(named):
+        if clashes[outputs[i]] > 1:
+            key = outputs[i]
+            rank[key] = rank.get(key, 0) + 1
+            outputs[i] = os.path.join(output_dir, relative_dir, "%s_%s_%d_uv.%s" % (stem, extension, rank[key], fmt))
+    return [(src, out) for (src, _), out in zip(jobs, outputs)]
 
 
 def input_signature(path):
