@@ -61,6 +61,9 @@ struct Options
   bool optcuts = false;
   std::optional<double> optcuts_bound; // empty: each mesh under the E_d OptCuts reached
 
+  // --packing
+  bool packing = false;
+
   // --scaling
   bool scaling = false;
   std::optional<std::size_t> max_faces; // empty: no limit
