@@ -334,6 +334,58 @@ inline double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n,
   return found;
 }
 
+/// The shape packing of the charts of `mesh` (turned to their frames:
+/// `local`, extents `size`) at a scale above `scale` (UV per frame unit, the
+/// rectangles'), `padding` in texels of a `texture_size` square: writes the UVs of the charts' vertices into `x` and returns
+/// the scale, or returns 0 (nothing written) if it found none.
+inline double pack_shapes(const Chart_mesh& mesh, const std::vector<int>& chart_of_face,
+                          const std::vector<int>& chart_of_vertex, const std::vector<Vector2>& local,
+                          const std::vector<Vector2>& size, int texture_size, double padding,
+                          double scale, UV_vector& x)
+{
+  const int n = texture_size;
+  const int pad = std::isfinite(padding) ? int(std::ceil((std::max)(0., padding))) : 0;
+  if(n <= 0 || size.size() < 2 || 2 * pad + 2 >= n) return 0.;
+  std::vector<Chart_shape> shapes(size.size());
+  double area = 0.;
+  for(std::size_t c = 0; c < size.size(); ++c) shapes[c].size = size[c];
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    const auto& t = mesh.faces[f];
+    Chart_shape& shape = shapes[chart_of_face[f]];
+    shape.triangles.push_back({local[t[0]], local[t[1]], local[t[2]]});
+    const Vector2 e1 = local[t[1]] - local[t[0]], e2 = local[t[2]] - local[t[0]];
+    const double a = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+    shape.area += a;
+    area += a;
+  }
+  if(!(area > 0.)) return 0.;
+  const double high = (n - 2. * pad) / std::sqrt(area); // texels per unit filling the square
+  std::vector<Chart_raster> rasters;
+  std::vector<Raster_placement> at;
+  const double texels = largest_shape_scale(shapes, n, pad, scale * n, high, rasters, at);
+  if(!(texels > 0.)) return 0.;
+  // center the layout by whole texels (the rasters stay on the grid)
+  int used_x = 0, used_y = 0;
+  for(std::size_t c = 0; c < at.size(); ++c)
+  {
+    const bool turned = at[c].turn % 2 != 0;
+    used_x = (std::max)(used_x, at[c].x + (turned ? rasters[c].h : rasters[c].w));
+    used_y = (std::max)(used_y, at[c].y + (turned ? rasters[c].w : rasters[c].h));
+  }
+  for(Raster_placement& p : at)
+  {
+    p.x += (n - pad - used_x) / 2;
+    p.y += (n - pad - used_y) / 2;
+  }
+  for(int v = 0; v < mesh.number_of_vertices; ++v)
+  {
+    const int c = chart_of_vertex[v];
+    if(c >= 0) x.segment<2>(2 * v) = place_point(local[v], texels, rasters[c], at[c]) / double(n);
+  }
+  return texels / n;
+}
+
 } // namespace packing
 } // namespace cut
 } // namespace internal
