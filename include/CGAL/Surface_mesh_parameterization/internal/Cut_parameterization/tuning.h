@@ -221,7 +221,8 @@ constexpr int shape_packing_refinements = 3;
 /// the shape packing is tried only above this many times the rectangle packing's scale
 constexpr double shape_packing_margin = 1.01;
 /// above this many charts the rectangle packing (about O(n²)) is skipped when the shape packing is on
-constexpr int rectangle_packing_max_charts = 2000;
+/// (the layout may then fill less than the rectangles would)
+constexpr int rectangle_packing_max_charts = 20000;
 
 
 
