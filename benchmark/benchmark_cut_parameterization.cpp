@@ -9,6 +9,7 @@
 // Newton iterations per phase.
 // --scaling (scaling.h): time, memory and where the time goes as the mesh
 // grows, up to 640k faces.
+// --packing (packing.h): the atlas packing alone on 1,000 and 10,000 charts.
 //
 // Run with --help for the options.
 
@@ -16,6 +17,7 @@
 #include "hard_surface.h"
 #include "optcuts_comparison.h"
 #include "options.h"
+#include "packing.h"
 #include "scaling.h"
 
 #include "blas_setup.h"      // tools/
@@ -28,6 +30,7 @@ int main(int argc, char** argv)
   if(const int r = cut_benchmark::parse_options(argc, argv, opt)) return r == 1 ? 0 : r;
   cut_tools::use_one_blas_thread();
   cut_tools::keep_freed_memory();
+  if(opt.packing) return cut_benchmark::run_packing(opt);
   if(opt.scaling) return cut_benchmark::run_scaling(opt);
   if(opt.hard_surface) return cut_benchmark::run_hard_surface(opt);
   return opt.optcuts ? cut_benchmark::run_optcuts_comparison(opt) : cut_benchmark::run_comparison(opt);

@@ -139,6 +139,8 @@ int parse_options(int argc, char** argv, Options& opt)
                  "DIR/<name>.obj instead of running it (for\n"
                  "scripts/blender_smart_uv_comparison.sh)")
     ->type_name("DIR")->group(hard);
+  app.add_flag("--packing", opt.packing, "time the atlas packing alone on 1,000 and 10,000 generated charts")
+      ->group(scaling);
   app.add_flag("--scaling", opt.scaling, "run the scaling benchmark instead of the comparison")->group(scaling);
   scaling_only.push_back(app.add_option("--max-faces", opt.max_faces,
                                         "leave out meshes of more than N faces (default: none left out)")
@@ -178,6 +180,7 @@ int parse_options(int argc, char** argv, Options& opt)
                             opt.given_option("multiresolution_faces");
   if((other_method || opt.given_option("lambda")) && app.count("--baseline") == 0) opt.baseline_file.clear();
   if(other_method && app.count("--baseline-frontier") == 0) opt.frontier_file.clear();
+  if(opt.packing) return 0; // no mesh, no option
   if(opt.optcuts && opt.scaling) { std::cerr << "error: --optcuts and --scaling are separate modes\n"; return 2; }
   if(opt.hard_surface && (opt.optcuts || opt.scaling))
   {

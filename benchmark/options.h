@@ -64,6 +64,8 @@ struct Options
   // --hard-surface
   bool hard_surface = false;
   fs::path write_meshes_dir;           // empty: the corpus is not written
+  // --packing
+  bool packing = false;
 
   // --scaling
   bool scaling = false;

@@ -137,6 +137,53 @@ double segment_distance(const Vector2& a, const Vector2& b, const Vector2& c, co
   return (std::min)({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
 }
 
+/// Exact distances between the face edges of different charts (a sweep over
+/// x), and no chart inside another (a vertex of each chart in no face of
+/// another): every chart at least `gap` from every other.
+void check_chart_distances(const ic::Chart_mesh& mesh, const std::vector<int>& chart, const ic::UV_vector& uv,
+                           double gap)
+{
+  struct Segment { Vector2 a, b; int chart; };
+  std::vector<Segment> segments;
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      Vector2 a = uv.segment<2>(2 * mesh.faces[f][k]), b = uv.segment<2>(2 * mesh.faces[f][(k + 1) % 3]);
+      if(b.x() < a.x()) std::swap(a, b);
+      segments.push_back({a, b, chart[mesh.faces[f][0]]});
+    }
+  std::sort(segments.begin(), segments.end(), [](const Segment& s, const Segment& t) { return s.a.x() < t.a.x(); });
+  double closest = std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < segments.size(); ++i)
+    for(std::size_t j = i + 1; j < segments.size() && segments[j].a.x() <= segments[i].b.x() + gap; ++j)
+      if(segments[i].chart != segments[j].chart)
+        closest = (std::min)(closest, segment_distance(segments[i].a, segments[i].b, segments[j].a, segments[j].b));
+  EXPECT_TRUE(closest >= gap) << "closest border distance " << closest << " < " << gap;
+  // a chart inside another: one of its vertices inside a face of the other
+  int n = 0;
+  for(int c : chart) n = (std::max)(n, c + 1);
+  std::vector<int> sample(n, -1);
+  for(int v = 0; v < mesh.number_of_vertices; ++v)
+    if(chart[v] >= 0 && sample[chart[v]] < 0) sample[chart[v]] = v;
+  auto cross = [](const Vector2& u, const Vector2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  int inside = 0;
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    const Vector2 p0 = uv.segment<2>(2 * mesh.faces[f][0]), p1 = uv.segment<2>(2 * mesh.faces[f][1]),
+                  p2 = uv.segment<2>(2 * mesh.faces[f][2]);
+    const Vector2 low = p0.cwiseMin(p1).cwiseMin(p2), high = p0.cwiseMax(p1).cwiseMax(p2);
+    for(int c = 0; c < n; ++c)
+    {
+      if(sample[c] < 0 || c == chart[mesh.faces[f][0]]) continue;
+      const Vector2 q = uv.segment<2>(2 * sample[c]);
+      if((q - low).minCoeff() < 0. || (high - q).minCoeff() < 0.) continue;
+      const double d0 = cross(p1 - p0, q - p0), d1 = cross(p2 - p1, q - p1), d2 = cross(p0 - p2, q - p2);
+      inside += (d0 >= 0. && d1 >= 0. && d2 >= 0.) || (d0 <= 0. && d1 <= 0. && d2 <= 0.);
+    }
+  }
+  EXPECT_EQ(inside, 0);
+}
+
 /// Checks every guarantee of pack_charts on `packed` (from `input`) with result r.
 /// `gap`: the padding expected in output units; `exact_borders`: also compute
 /// exact distances between all face edges of different charts (small inputs).
@@ -195,7 +242,7 @@ void check_layout(const Atlas& atlas, const ic::UV_vector& input, const ic::UV_v
   for(int c = 0; c < n; ++c)
   {
     near_side += !(low[c].minCoeff() >= gap - slack && high[c].maxCoeff() <= r.side - gap + slack);
-    for(int d = c + 1; d < n; ++d)
+    for(int d = c + 1; d < n && !r.by_shape; ++d) // the shape packing nests rectangles
     {
       const Vector2 sep = (low[d] - high[c]).cwiseMax(low[c] - high[d]);
       near_pair += !(sep.maxCoeff() >= gap - slack);
@@ -203,21 +250,7 @@ void check_layout(const Atlas& atlas, const ic::UV_vector& input, const ic::UV_v
   }
   EXPECT_TRUE(near_side == 0) << near_side << " charts closer than " << gap << " to the square's sides";
   EXPECT_TRUE(near_pair == 0) << near_pair << " pairs of chart rectangles closer than " << gap;
-
-  if(!exact_borders) return;
-  double closest = inf;
-  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
-    for(std::size_t g = f + 1; g < mesh.number_of_faces(); ++g)
-    {
-      if(chart[mesh.faces[f][0]] == chart[mesh.faces[g][0]]) continue;
-      for(int k = 0; k < 3; ++k)
-        for(int l = 0; l < 3; ++l)
-        {
-          auto p = [&](std::size_t face, int i) { return Vector2(packed.segment<2>(2 * mesh.faces[face][i % 3])); };
-          closest = (std::min)(closest, segment_distance(p(f, k), p(f, k + 1), p(g, l), p(g, l + 1)));
-        }
-    }
-  EXPECT_TRUE(closest >= gap - slack) << "closest border distance " << closest << " < " << gap;
+  if(exact_borders || r.by_shape) check_chart_distances(mesh, chart, packed, gap - slack);
 }
 
 ic::Packing_result pack(const Atlas& atlas, ic::UV_vector& x, const ic::Packing_settings& s = ic::Packing_settings())
@@ -440,3 +473,35 @@ TEST(Packing, thousands_of_tiny_charts_get_a_valid_layout)
   EXPECT_TRUE(r.coverage > 0.5);
 }
 
+
+TEST(Packing, shapes_nest_where_rectangles_cannot)
+{
+  // L shapes and triangles: their rectangles leave half of them empty
+  Atlas atlas;
+  Rng rng(5);
+  for(int c = 0; c < 16; ++c)
+  {
+    const double s = rng.uniform(0.5, 1.5);
+    const Vector2 t(rng.uniform(-3., 3.), rng.uniform(-3., 3.));
+    if(c % 2) add_grid(atlas, s, s, 4, 4, rng.uniform(0., 6.), t, true);
+    else atlas.add_chart(moved({Vector2(0., 0.), Vector2(s, 0.), Vector2(0., s)}, rng.uniform(0., 6.), t), {{{0, 1, 2}}});
+  }
+  for(double padding : {0., 2., 8.})
+  {
+    SCOPED_TRACE("padding " + to_text(padding));
+    ic::Packing_settings s;
+    s.padding = padding;
+    s.texture_size = 256;
+    ic::UV_vector by_shape, by_rectangle;
+    const ic::Packing_result a = pack(atlas, by_shape, s);
+    s.shapes = false;
+    const ic::Packing_result b = pack(atlas, by_rectangle, s);
+    EXPECT_TRUE(a.by_shape);
+    EXPECT_FALSE(b.by_shape);
+    check_layout(atlas, atlas.x(), by_shape, a, padding / 256., true);
+    check_layout(atlas, atlas.x(), by_rectangle, b, padding / 256., true);
+    std::cout << "  padding " << padding << ": coverage by shape " << a.coverage << ", by rectangle " << b.coverage
+              << std::endl;
+    EXPECT_TRUE(a.coverage > 1.05 * b.coverage); // 1.13, 1.06, 1.10 when written
+  }
+}

@@ -109,6 +109,9 @@ CGAL_SMP_CUT_NAMED_PARAMETER(padding_t, padding)
 /// Atlas: true keeps the 3D scale (UV in world units, charts still packed without overlap) instead of
 /// scaling the atlas into the unit square (bool, default false).
 CGAL_SMP_CUT_NAMED_PARAMETER(world_units_t, world_units)
+/// Scene atlas (pack_scene_atlas()): texels per unit of 3D length (double, default 0: the largest that
+/// fits one page).
+CGAL_SMP_CUT_NAMED_PARAMETER(texels_per_unit_t, texels_per_unit)
 /// Atlas: width / height of a rectangle that the final solve pulls each chart into (double; default 1;
 /// 0: off).
 CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_aspect_ratio_t, bounding_box_aspect_ratio)

@@ -221,6 +221,21 @@ constexpr double lambda_candidate_length_ratio = 1.5;
 /// the multiresolution copy's λ is scaled by (mean edge ratio)^this
 constexpr double coarse_lambda_exponent = 0.25;
 
+// -- shape packing (atlas/shape_packing.h)
+/// a chart's raster holds every texel its triangles come within this many texels of (rounding)
+constexpr double raster_margin_texels = 1e-3;
+/// the scale search steps down from the area bound by this factor until the charts pack ...
+constexpr double shape_packing_step = 0.93;
+/// ... at most this many times (then the rectangle packing is kept) ...
+constexpr int shape_packing_steps = 24;
+/// ... then bisects this many times
+constexpr int shape_packing_refinements = 3;
+/// the shape packing is tried only above this many times the rectangle packing's scale
+constexpr double shape_packing_margin = 1.01;
+/// above this many charts the rectangle packing (about O(n²)) is skipped when the shape packing is on
+/// (the layout may then fill less than the rectangles would)
+constexpr int rectangle_packing_max_charts = 20000;
+
 
 
 // ---- end of the pipeline section

@@ -11,9 +11,12 @@
 // common scale that packs is searched directly: from an area bound down in 5%
 // steps, then by bisection, each trial a full MaxRects packing (two orders:
 // by longer side, by area). About O(n²) for n charts, ~0.1 s for 2000.
+// Then the shape packing (shape_packing.h) searches a larger scale, above
+// the rectangles', at which the charts' rasters pack; it is kept if found.
 #ifndef CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/shape_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 
 #include <algorithm>
@@ -32,6 +35,7 @@ struct Packing_settings
   int texture_size = 1024;  ///< texels per side of the square texture
   double padding = 2.;      ///< gap in texels between two charts, and between a chart and the square's sides
   bool world_units = false; ///< true: keep the 3D scale (scale 1); the layout is the same, in world units
+  bool shapes = true;       ///< also try the shape packing (rasters of the charts), kept where it packs larger
 };
 
 struct Packing_result
@@ -39,6 +43,7 @@ struct Packing_result
   double coverage = 0.; ///< total UV area of the charts / area of the packing square
   double scale = 1.;    ///< common factor applied to every chart (UV length per input UV length); 1 in world units
   double side = 1.;     ///< side of the packing square in the output units (1 unless world_units)
+  bool by_shape = false; ///< the shape packing was kept (charts' bounding rectangles may overlap)
 };
 
 namespace packing {
@@ -301,9 +306,10 @@ inline bool chart_rectangles(const Chart_mesh& mesh, const UV_vector& x, const s
 /// The largest scale at which the rectangles of `size` (made at least a
 /// tiny fraction of the largest) pack into the unit square with the padding
 /// of `settings` (lowered where even points would not fit): `pad`, `room`
-/// and the placements `best` of that scale.
+/// and the placements `best` of that scale. Without `rectangles`, only the
+/// grid of cells that always fits (the fallback of the shape packing).
 inline double largest_packing_scale(std::vector<Vector2>& size, const Packing_settings& settings, double& pad,
-                                    double& room, std::vector<Placement>& best)
+                                    double& room, std::vector<Placement>& best, bool rectangles = true)
 {
   const int n = int(size.size());
   double largest = 0.;
@@ -350,6 +356,7 @@ inline double largest_packing_scale(std::vector<Vector2>& size, const Packing_se
   std::vector<Placement> trial;
   for(int j = 0; j < n; ++j) // the grid, always valid at scale 'low'
     best[j] = {cell * (j % k), cell * (j / k), false};
+  if(!rectangles) return low;
   // largest scale that packs: step down from the bound by 5% until one
   // packs, then bisect (the grid at 'low' is the fallback)
   auto attempt = [&](double scale) {
@@ -378,11 +385,14 @@ inline double largest_packing_scale(std::vector<Vector2>& size, const Packing_se
 /// Guarantees, for the UV vertices of the faces (other entries of `x` are
 /// left as they are): each chart is moved by a rotation and a translation,
 /// then scaled by `result.scale`, common to all charts, so shapes and face
-/// orientations (signed UV areas) are kept. The charts' bounding rectangles
-/// lie in the square [0, result.side]² (the unit square, or in world units
-/// the same layout with scale 1), at least `padding * side / texture_size`
-/// (and never less than 1e-6 side, so that charts never touch) from each
-/// other and from the square's sides. If even charts shrunk to
+/// orientations (signed UV areas) are kept. The charts lie in the square
+/// [0, result.side]² (the unit square, or in world units the same layout
+/// with scale 1), at least `padding * side / texture_size` (and never less
+/// than 1e-6 side, so that charts never touch) from each other and from the
+/// square's sides. With the rectangle packing (`result.by_shape` false) this
+/// holds for their bounding rectangles; with the shape packing, for the
+/// charts themselves (their rasters, dilated by the padding rounded up to
+/// whole texels, are disjoint). If even charts shrunk to
 /// points could not be that far apart (the padding times about sqrt(number of
 /// charts) exceeds the texture size), the padding is lowered to half of the
 /// largest feasible value, so the layout is always valid and finite.
@@ -402,29 +412,42 @@ inline Packing_result pack_charts(const Chart_mesh& mesh, UV_vector& x,
     return result;
   double pad = 0., room = 0.;
   std::vector<packing::Placement> best;
-  const double scale = packing::largest_packing_scale(size, settings, pad, room, best);
-
-  // center the layout, then place each chart at pad inside its box
-  Vector2 used = Vector2::Zero();
-  for(int c = 0; c < n; ++c)
+  const bool rectangles = !settings.shapes || n <= tuning::rectangle_packing_max_charts;
+  double scale = packing::largest_packing_scale(size, settings, pad, room, best, rectangles);
+  const double by_shape = settings.shapes
+                              ? packing::pack_shapes(mesh, chart_of_face, chart_of_vertex, local, size, settings.texture_size,
+                                                     settings.padding, scale, x)
+                              : 0.;
+  result.by_shape = by_shape > 0.;
+  if(result.by_shape) scale = by_shape;
+  else
   {
-    const Vector2 s = scale * size[c] + Vector2::Constant(pad);
-    used = used.cwiseMax(Vector2(best[c].x, best[c].y) + (best[c].turned ? Vector2(s.y(), s.x()) : s));
+    // center the layout, then place each chart at pad inside its box
+    Vector2 used = Vector2::Zero();
+    for(int c = 0; c < n; ++c)
+    {
+      const Vector2 s = scale * size[c] + Vector2::Constant(pad);
+      used = used.cwiseMax(Vector2(best[c].x, best[c].y) + (best[c].turned ? Vector2(s.y(), s.x()) : s));
+    }
+    const Vector2 shift = 0.5 * (Vector2::Constant(room) - used).cwiseMax(Vector2::Zero()) + Vector2::Constant(pad);
+    for(int v = 0; v < mesh.number_of_vertices; ++v)
+    {
+      const int c = chart_of_vertex[v];
+      if(c < 0) continue;
+      const Vector2& q = local[v];
+      const Vector2 p = best[c].turned ? Vector2(size[c].y() - q.y(), q.x()) : q; // turned: rotation by +90°
+      x.segment<2>(2 * v) = Vector2(best[c].x, best[c].y) + shift + scale * p;
+    }
   }
-  const Vector2 shift = 0.5 * (Vector2::Constant(room) - used).cwiseMax(Vector2::Zero()) + Vector2::Constant(pad);
   const double unit = settings.world_units ? 1. / scale : 1.; // length of the square's side
   result.scale = settings.world_units ? 1. : scale;
   result.side = unit;
   for(int v = 0; v < mesh.number_of_vertices; ++v)
   {
-    const int c = chart_of_vertex[v];
-    if(c < 0) continue;
-    const Vector2 corner = (Vector2(best[c].x, best[c].y) + shift) * unit;
-    const Vector2& q = local[v];
-    const Vector2 p = best[c].turned ? Vector2(size[c].y() - q.y(), q.x()) : q; // turned: rotation by +90°
-    Vector2 uv = corner + result.scale * p;
-    if(!settings.world_units) uv = uv.cwiseMax(Vector2::Zero()).cwiseMin(Vector2::Ones()); // rounding only
-    x.segment<2>(2 * v) = uv;
+    if(chart_of_vertex[v] < 0) continue;
+    Vector2 uv = x.segment<2>(2 * v);
+    uv = uv.cwiseMax(Vector2::Zero()).cwiseMin(Vector2::Ones()); // rounding only
+    x.segment<2>(2 * v) = uv * unit;
   }
   double uv_area = 0.;
   for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)

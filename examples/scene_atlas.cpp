@@ -1,0 +1,87 @@
+// A scene atlas: several meshes unwrapped one by one, then all their charts
+// packed into one shared texture at one texel density (texels per unit of 3D
+// length), as a lightmap of a scene needs. First the largest density that
+// fits one page, then 1.3 times that density, which needs two pages.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Surface_mesh_parameterization/IO/write_OBJ_with_uvs.h>
+#include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/pack_scene_atlas.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point_2 = Kernel::Point_2;
+using Point_3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Seam_map = Mesh::Property_map<Mesh::Edge_index, bool>;
+using UV_map = Mesh::Property_map<Mesh::Halfedge_index, Point_2>;
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+int main(int argc, char** argv)
+{
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i) files.push_back(argv[i]);
+  if(files.empty())
+    for(const char* name : {"meshes/cactus.off", "meshes/joint.off", "meshes/eight.off"})
+      files.push_back(CGAL::data_file_path(name));
+
+  // each mesh unwrapped on its own (its own seams and charts)
+  std::vector<Mesh> meshes(files.size());
+  std::vector<SMP::Scene_atlas_mesh<Mesh, Seam_map, UV_map>> scene;
+  for(std::size_t m = 0; m < files.size(); ++m)
+  {
+    if(!CGAL::IO::read_polygon_mesh(files[m], meshes[m]) || !CGAL::is_triangle_mesh(meshes[m]))
+    {
+      std::cerr << "Cannot read a triangle mesh from " << files[m] << std::endl;
+      return EXIT_FAILURE;
+    }
+    Seam_map seams = meshes[m].add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+    UV_map uvmap = meshes[m].add_property_map<Mesh::Halfedge_index, Point_2>("h:uv").first;
+    const auto unwrapped = SMP::cut_and_parameterize(meshes[m], seams, uvmap);
+    if(!unwrapped.ok())
+    {
+      std::cerr << files[m] << ": " << SMP::error_message(unwrapped.error) << std::endl;
+      return EXIT_FAILURE;
+    }
+    std::cout << files[m] << ": " << num_faces(meshes[m]) << " faces, " << unwrapped.number_of_charts << " charts\n";
+    scene.push_back(SMP::make_scene_atlas_mesh(meshes[m], seams, uvmap));
+  }
+
+  // one 512 x 512 page, 4 texels between charts: the largest common density
+  const auto one_page = SMP::pack_scene_atlas(scene, SMP::parameters::texture_size(512, SMP::parameters::padding(4.)));
+  if(one_page.error != SMP::OK)
+  {
+    std::cerr << "Failed: " << SMP::error_message(one_page.error) << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "one page: " << one_page.texels_per_unit << " texels per unit\n";
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const std::string output = "scene_atlas_" + std::to_string(m) + ".obj";
+    if(!SMP::write_OBJ_with_uvs(output, meshes[m], scene[m].uvmap))
+    {
+      std::cerr << "Cannot write " << output << std::endl;
+      return EXIT_FAILURE;
+    }
+  }
+
+  // 1.3 times the density (1.7 times the area): the meshes no longer fit one page
+  const auto pages = SMP::pack_scene_atlas(
+    scene, SMP::parameters::texels_per_unit(1.3 * one_page.texels_per_unit,
+                                            SMP::parameters::texture_size(512, SMP::parameters::padding(4.))));
+  if(pages.error != SMP::OK)
+  {
+    std::cerr << "Failed: " << SMP::error_message(pages.error) << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "at " << pages.texels_per_unit << " texels per unit: " << pages.number_of_pages << " pages\n";
+  for(std::size_t m = 0; m < meshes.size(); ++m) std::cout << "  " << files[m] << ": page " << pages.page[m] << "\n";
+  return pages.number_of_pages > 1 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,229 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PACK_SCENE_ATLAS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_PACK_SCENE_ATLAS_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/scene_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
+#include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <numeric>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgCutParameterizationRef
+/// One mesh of a scene atlas: the mesh, its seams and its UVs (at its
+/// halfedges, as `cut_and_parameterize()` writes them). The maps are copied;
+/// the UV map is written through its copy (a property map is a handle).
+template <typename TriangleMesh, typename SeamEdgeMap, typename HalfedgeUVMap>
+struct Scene_atlas_mesh
+{
+  const TriangleMesh* mesh;   ///< the mesh (not owned)
+  SeamEdgeMap seam_edge_map;  ///< its seams: the charts are its faces cut along them
+  HalfedgeUVMap uvmap;        ///< its UVs, read, then replaced by those of the atlas
+};
+
+/// \ingroup PkgCutParameterizationRef
+/// Makes a `Scene_atlas_mesh`; `mesh` must outlive it.
+template <typename TriangleMesh, typename SeamEdgeMap, typename HalfedgeUVMap>
+Scene_atlas_mesh<TriangleMesh, SeamEdgeMap, HalfedgeUVMap>
+make_scene_atlas_mesh(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, HalfedgeUVMap uvmap)
+{
+  return {&mesh, seam_edge_map, uvmap};
+}
+
+/// \ingroup PkgCutParameterizationRef
+/// What `pack_scene_atlas()` did.
+struct Scene_atlas_result
+{
+  Error_code error = OK;       ///< `OK` or the reason nothing was written
+  int number_of_pages = 0;     ///< pages used
+  double texels_per_unit = 0.; ///< texels per unit of 3D length, the same for every mesh
+  std::vector<int> page;       ///< page of each mesh, in the order given
+};
+
+namespace internal {
+namespace cut {
+
+/// Charts (faces joined across edges that are neither seams nor borders)
+/// of one mesh, as scene charts at 3D scale; `face_chart` and the frame
+/// corners of each face are kept to write the UVs back. False if a UV is not
+/// finite or the UV area is zero.
+template <typename Surface, typename SeamEdgeMap, typename HalfedgeUVMap>
+bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const HalfedgeUVMap& uvmap, int mesh,
+                       std::vector<Scene_chart>& charts, std::vector<int>& face_chart)
+{
+  const std::size_t nf = surface.number_of_faces();
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int f) { while(parent[f] != f) f = parent[f] = parent[parent[f]]; return f; };
+  for(int fe = 0; fe < int(3 * nf); ++fe)
+    if(surface.twin[fe] >= 0 && !get(seams, surface.edges[surface.edge_of[fe]]))
+      parent[find(fe / 3)] = find(surface.twin[fe] / 3);
+  std::vector<std::array<Vector2, 3>> uv(nf);
+  double area_3d = 0., area_uv = 0.;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto p = get(uvmap, surface.corner_halfedge[f][k]);
+      uv[f][k] = Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      if(!uv[f][k].allFinite()) return false;
+    }
+    const Vector3 &a = surface.points[surface.corner_vertex[f][0]], &b = surface.points[surface.corner_vertex[f][1]],
+                  &c = surface.points[surface.corner_vertex[f][2]];
+    area_3d += 0.5 * (b - a).cross(c - a).norm();
+    const Vector2 e1 = uv[f][1] - uv[f][0], e2 = uv[f][2] - uv[f][0];
+    area_uv += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  if(!(area_uv > 0.) || !(area_3d > 0.)) return false;
+  const double scale = std::sqrt(area_3d / area_uv); // the mesh's UV at 3D scale
+  std::vector<int> chart_of_root(nf, -1);
+  std::vector<std::vector<std::array<Vector2, 3>>> corners;
+  std::vector<std::vector<int>> faces;
+  face_chart.assign(nf, -1);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    int& c = chart_of_root[find(int(f))];
+    if(c < 0) { c = int(corners.size()); corners.emplace_back(); faces.emplace_back(); }
+    corners[c].push_back(uv[f]);
+    faces[c].push_back(int(f));
+  }
+  for(std::size_t c = 0; c < corners.size(); ++c)
+  {
+    for(int f : faces[c]) face_chart[f] = int(charts.size());
+    charts.push_back({chart_shape(corners[c], scale), mesh});
+  }
+  return true;
+}
+
+} // namespace cut
+} // namespace internal
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Packs the charts of several already unwrapped meshes (for instance by
+/// `cut_and_parameterize()`) into one atlas, or into pages of one size when
+/// one page is not enough, all at one texel density: each mesh's UVs are
+/// scaled so that their total area equals its 3D area, then every chart is
+/// moved by a rotation and a translation and all by one common scale, the
+/// texels per unit of 3D length. Charts are packed by their shape (their
+/// rasters at the page's resolution, turned by multiples of 90°). All the
+/// charts of a mesh go to one page.
+///
+/// \tparam SceneAtlasMesh `Scene_atlas_mesh<TriangleMesh, SeamEdgeMap, HalfedgeUVMap>`
+///   (`make_scene_atlas_mesh()`), with `SeamEdgeMap` a `ReadablePropertyMap` from edges to
+///   `bool` and `HalfedgeUVMap` a `ReadWritePropertyMap` from halfedges to a 2D point
+///
+/// \param meshes the meshes, their seams and UVs; the UVs are replaced by
+///   those of the atlas (in [0,1]² of the mesh's page)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{texture_size}
+///     \cgalParamDescription{texels per side of a page}
+///     \cgalParamType{`int`, ≥ 1}
+///     \cgalParamDefault{`1024`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{padding}
+///     \cgalParamDescription{gap in texels between charts (of any meshes of a page) and to the
+///       page's sides, rounded up to whole texels}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{texels_per_unit}
+///     \cgalParamDescription{texels per unit of 3D length; meshes go on as many pages as
+///       needed; 0: the largest density at which every chart fits one page}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return `error` `OK`, or `ERROR_EMPTY_MESH` (no mesh or a mesh without
+///   face), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE`,
+///   `ERROR_NON_MANIFOLD`, `ERROR_WRONG_PARAMETER` (a parameter out of range,
+///   a UV that is not finite or a mesh of zero UV area, or the charts of a mesh
+///   that do not fit one page at the given density)
+///
+/// \pre every mesh is a model of `FaceGraph` made of triangles, and its UV map
+///   holds one UV map of it whose charts are the connected components of its
+///   faces cut along the seams (as `cut_and_parameterize()` leaves them)
+/// \post on error, every UV map is left unchanged
+/// \post on success: every UV lies in [0,1]²; the charts of the meshes of one
+///   page are at least `padding` texels apart (never touching); each chart
+///   is moved by a similarity (no mirror), all at `texels_per_unit`; the result
+///   depends on the input only
+template <typename SceneAtlasMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ic = internal::cut;
+  using TriangleMesh = std::remove_cv_t<std::remove_pointer_t<decltype(SceneAtlasMesh::mesh)>>;
+  using Surface = ic::Indexed_surface<TriangleMesh>;
+  Scene_atlas_result result;
+  const int texture_size = choose_parameter(get_parameter(np, internal_np::texture_size), 1024);
+  const double padding = choose_parameter(get_parameter(np, internal_np::padding), 2.);
+  const double texels_per_unit = choose_parameter(get_parameter(np, internal_np::texels_per_unit), 0.);
+  if(!(texture_size >= 1) || !(padding >= 0.) || !std::isfinite(padding) || !(texels_per_unit >= 0.) ||
+     !std::isfinite(texels_per_unit))
+  { result.error = ERROR_WRONG_PARAMETER; return result; }
+  if(meshes.empty()) { result.error = ERROR_EMPTY_MESH; return result; }
+
+  std::vector<Surface> surfaces(meshes.size());
+  std::vector<std::vector<int>> face_chart(meshes.size());
+  std::vector<ic::Scene_chart> charts;
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const TriangleMesh& mesh = *meshes[m].mesh;
+    const Error_code indexing = ic::to_error_code(
+      ic::index_surface(mesh, ic::vertex_points(mesh, CGAL::parameters::default_values()), surfaces[m]));
+    if(indexing != OK) { result.error = indexing; return result; }
+    if(!ic::read_scene_charts(surfaces[m], meshes[m].seam_edge_map, meshes[m].uvmap, int(m), charts, face_chart[m]))
+    { result.error = ERROR_WRONG_PARAMETER; return result; }
+  }
+  ic::Scene_layout layout;
+  if(!ic::layout_scene(charts, int(meshes.size()), texture_size, padding, texels_per_unit, layout))
+  { result.error = ERROR_WRONG_PARAMETER; return result; }
+
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const Surface& s = surfaces[m];
+    using Point_2 = typename boost::property_traits<decltype(meshes[m].uvmap)>::value_type;
+    std::vector<std::size_t> next(charts.size(), 0); // next triangle of each chart, in face order
+    std::vector<Point_2> uv(3 * s.number_of_faces());
+    for(std::size_t f = 0; f < s.number_of_faces(); ++f)
+    {
+      const int c = face_chart[m][f];
+      const auto& t = charts[c].shape.triangles[next[c]++];
+      for(int k = 0; k < 3; ++k)
+      {
+        const ic::Vector2 p = ic::scene_uv(layout, texture_size, c, t[k]);
+        uv[3 * f + k] = Point_2(p.x(), p.y());
+      }
+    }
+    for(std::size_t fe = 0; fe < uv.size(); ++fe)
+    {
+      put(meshes[m].uvmap, s.corner_halfedge[fe / 3][fe % 3], uv[fe]);
+      if(s.twin[fe] < 0) put(meshes[m].uvmap, opposite(s.face_edge_halfedge(int(fe)), *meshes[m].mesh), uv[fe]);
+    }
+  }
+  result.number_of_pages = layout.pages;
+  result.texels_per_unit = layout.texels_per_unit;
+  result.page = layout.page_of_mesh;
+  return result;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
