@@ -42,7 +42,7 @@ struct Options
   // --multiresolution-faces, --inner-solver; one slot per row (nullopt: not given)
   cut_options::Given_options given;
   // them as the library's options: those not given left as the library leaves them
-  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method;
+  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method = cut_options::front_end_options();
   /// The option of this field of Cut_parameterization_options was given.
   bool given_option(const char* name) const
   {

@@ -126,6 +126,9 @@ void expect_valid_atlas(const Split_mesh& mesh, const Cut_run<Split_mesh>& run)
   EXPECT_EQ(SMP::number_of_flipped_faces(mesh, r.uvs()), std::size_t(0));
   EXPECT_EQ(SMP::number_of_border_crossings(mesh, r.uvs()), std::size_t(0));
   EXPECT_LT(SMP::uv_overlap_area(mesh, r.uvs()), 1e-12);
+  // seams are interior edges (a Seam_mesh's), glued border edges included
+  for(auto e : edges(mesh))
+    if(run.is_seam(e)) EXPECT_FALSE(is_border(e, mesh)) << "a seam on the border of the split mesh";
   for(Split_face f : faces(mesh))
     for(Split_halfedge h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
     {
@@ -150,7 +153,7 @@ void check_split_normals(const Split_mesh& welded, double angle_degrees, const N
   EXPECT_EQ(reference.result.number_of_welded_vertices, std::size_t(0));
 
   Cut_run<Split_mesh> joined(split);
-  ASSERT_TRUE(joined.run(np).ok());
+  ASSERT_TRUE(joined.run(SMP::parameters::weld_colocal_vertices(true, np)).ok());
   EXPECT_EQ(joined.result.number_of_welded_vertices, num_vertices(split) - num_vertices(welded));
   EXPECT_EQ(joined.result.number_of_charts, reference.result.number_of_charts);
   EXPECT_NEAR(joined.result.seam_length, reference.result.seam_length, 1e-6 * (1. + reference.result.seam_length));
@@ -159,7 +162,7 @@ void check_split_normals(const Split_mesh& welded, double angle_degrees, const N
 
   if(!unwelded_run) return;
   Cut_run<Split_mesh> apart(split);
-  ASSERT_TRUE(apart.run(SMP::parameters::weld_colocal_vertices(false, np)).ok());
+  ASSERT_TRUE(apart.run(np).ok()); // the library's default: no welding
   EXPECT_EQ(apart.result.number_of_welded_vertices, std::size_t(0));
   EXPECT_EQ(apart.result.number_of_charts, pieces); // each piece a chart (each is a disk here)
   EXPECT_EQ(charts_drawn_by_uvs(split, apart), pieces);
@@ -184,7 +187,7 @@ TEST(ColocalVertices, pieces_touching_at_a_corner_stay_apart)
   soup.add_triangle(3, 4, 5);
   const Split_mesh mesh = make_mesh<Split_mesh>(soup);
   Cut_run<Split_mesh> run(mesh);
-  ASSERT_TRUE(run.run().ok());
+  ASSERT_TRUE(run.run(SMP::parameters::weld_colocal_vertices(true)).ok());
   EXPECT_EQ(run.result.number_of_welded_vertices, std::size_t(0));
   EXPECT_EQ(run.result.number_of_charts, std::size_t(2));
   expect_valid_atlas(mesh, run);

@@ -151,6 +151,17 @@ TEST(Injectivity, no_change_where_nothing_overlaps)
   EXPECT_EQ(different, std::size_t(0));
 }
 
+/// Distance from `p` to the segment `s` in UV.
+double point_segment_distance(const Point_2& p, const std::array<Point_2, 2>& s)
+{
+  const double dx = s[1].x() - s[0].x(), dy = s[1].y() - s[0].y();
+  const double l2 = dx * dx + dy * dy;
+  double t = l2 > 0. ? ((p.x() - s[0].x()) * dx + (p.y() - s[0].y()) * dy) / l2 : 0.;
+  t = (std::max)(0., (std::min)(1., t));
+  const double ex = s[0].x() + t * dx - p.x(), ey = s[0].y() + t * dy - p.y();
+  return std::sqrt(ex * ex + ey * ey);
+}
+
 TEST(Injectivity, padding_and_texture_size_are_honoured)
 {
   // two disjoint disks: their UVs are at least padding / texture_size apart
@@ -163,9 +174,20 @@ TEST(Injectivity, padding_and_texture_size_are_honoured)
     run.run(P::padding(padding, P::texture_size(256)));
     const auto report = check_cut_result(mesh, run);
     ASSERT_EQ(report.box.size(), std::size_t(2));
-    const auto& a = report.box[0];
-    const auto& b = report.box[1];
-    const double gap = (std::max)({b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3]});
+    // the closest points of the two charts' borders (charts packed by shape)
+    std::vector<std::array<Point_2, 2>> border[2];
+    for(auto h : halfedges(mesh))
+      if(is_border(h, mesh))
+      {
+        const auto f = face(opposite(h, mesh), mesh);
+        const int k = report.chart_of_face.at(f);
+        border[k].push_back({run.uv(opposite(h, mesh)), run.uv(prev(opposite(h, mesh), mesh))});
+      }
+    double gap = std::numeric_limits<double>::infinity();
+    for(const auto& s : border[0])
+      for(const auto& t : border[1])
+        gap = (std::min)({gap, point_segment_distance(s[0], t), point_segment_distance(s[1], t),
+                          point_segment_distance(t[0], s), point_segment_distance(t[1], s)});
     EXPECT_TRUE(gap >= padding / 256. * (1. - 1e-9)) << "gap " << gap << " below the padding";
     for(const auto& box : report.box)
       EXPECT_TRUE(box[0] >= padding / 256. - 1e-12 && box[1] >= padding / 256. - 1e-12 &&

@@ -3,6 +3,7 @@
 #ifndef CUT_PARAM_TOOLS_UV_UNWRAP_OPTIONS_H
 #define CUT_PARAM_TOOLS_UV_UNWRAP_OPTIONS_H
 
+#include "options/option_table.h"
 #include "preview/preview.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
@@ -36,7 +37,7 @@ struct Options
   // the library's options, filled from the option table's flags
   // (options/option_table.h); those not given stay as the library leaves
   // them (unset: its rules, e.g. the default box, decide)
-  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method;
+  CGAL::Surface_mesh_parameterization::Cut_parameterization_options method = cut_options::front_end_options();
   // seams and visibility (face_visibility.h)
   double hide_seams = 0.;        // > 0: λ from the visibility, with this strength
   bool report_visibility = false; // compute seam_visibility without steering the seams

@@ -3,7 +3,8 @@
 // Cut_parameterization_options (= its named parameter), its command-line
 // flag, its Python keyword, its Blender property, its kind, its range, its
 // group and its help. The default is the library's (read from a
-// default-constructed Cut_parameterization_options, not restated here); an
+// default-constructed Cut_parameterization_options, not restated here, but
+// for the one front_end_options() changes); an
 // option the user did not give stays as the library leaves it ("unset"
 // for the std::optional fields, whose rule is the library's).
 //
@@ -156,10 +157,20 @@ inline const std::vector<Option_spec>& option_table()
 
 #undef CUT_PARAM_OPTION_SPEC
 
-/// The library's default of `spec` (nullopt: unset, the library's rule applies).
+/// The options the front ends start from: the library's defaults, except
+/// that colocal vertices are welded (a file exported with split normals is
+/// one surface to its user; a library caller's mesh is taken as it is).
+inline SMP::Cut_parameterization_options front_end_options()
+{
+  SMP::Cut_parameterization_options o;
+  o.weld_colocal_vertices = true;
+  return o;
+}
+
+/// The front ends' default of `spec` (nullopt: unset, the library's rule applies).
 inline std::optional<double> default_value(const Option_spec& spec)
 {
-  return spec.get(SMP::Cut_parameterization_options());
+  return spec.get(front_end_options());
 }
 
 /// The names of a CHOICE, in order.

@@ -198,11 +198,13 @@ namespace Surface_mesh_parameterization {
 ///       are one vertex of the unwrapping, and border edges that then join the same two
 ///       vertices (in opposite directions, no third edge between them) one interior edge, so
 ///       that a mesh exported with split normals or UV islands is unwrapped as the surface
-///       it stands for; the outputs stay per halfedge of `mesh` (such a glued border edge
-///       may be a seam). Welds that would pinch a vertex or collapse a face are not made;
-///       `false`: each piece is unwrapped as it comes}
+///       it stands for; the outputs stay per halfedge of `mesh` (a glued border edge is
+///       never a seam: where the two sides are cut apart, the border already says so).
+///       Welds that would pinch a vertex or collapse a face are not made;
+///       `false`: each piece is unwrapped as it comes (the library's default; the front
+///       ends weld unless told `--no-weld`)}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true`}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the positions of the vertices (converted to `double`)}
@@ -302,8 +304,7 @@ namespace Surface_mesh_parameterization {
 ///   no two UV border segments cross (with `global_injectivity`), every UV lies
 ///   in [0,1]² (unless `world_units`) with charts at least `padding` texels
 ///   apart,
-///   every seam edge is an edge of the mesh that is not on its boundary (or, with
-///   `weld_colocal_vertices`, a border edge glued to a colocal one) and
+///   every seam edge is an edge of the mesh that is not on its boundary and
 ///   not flagged in `forbidden_seam_edge_map`, and
 ///   cutting along the seams leaves every connected component a topological
 ///   disk (checked by assertions in debug builds)

@@ -64,7 +64,7 @@ struct Cut_parameterization_options
   Inner_solver inner_solver = Inner_solver::NEWTON; ///< the inner solver of every minimization
   Preset preset = Preset::DEFAULT;        ///< FAST: less work for interactive use (see `with_preset()`)
   bool reject_degenerate_faces = false;   ///< refuse degenerate faces instead of clamping them
-  bool weld_colocal_vertices = true;      ///< vertices at one position are one vertex of the unwrapping
+  bool weld_colocal_vertices = false;     ///< vertices at one position are one vertex of the unwrapping
   // the atlas
   bool global_injectivity = true;         ///< no chart overlaps itself or another
   int texture_size = 1024;                ///< texels per side of the texture (the padding's scale)

@@ -52,8 +52,9 @@ void write_corner_uvs(const TriangleMesh& mesh, const Indexed_surface<TriangleMe
 }
 
 /// After welding (mesh/colocal_vertices.h): the input's border halfedges
-/// across the face-edges `glued` get the UV of the corner at their target,
-/// and their edges the seam flag of the edge they were glued into.
+/// across the face-edges `glued` get the UV of the corner at their target;
+/// their edges, on the input's border, are never seams (a `Seam_mesh`'s
+/// seams are interior edges).
 template <typename TriangleMesh, typename Surface, typename HalfedgeUVMap, typename SeamEdgeMap>
 void write_glued_outputs(const TriangleMesh& mesh, const Surface& surface, const std::vector<int>& glued,
                          const Map_state& state, HalfedgeUVMap uvmap, SeamEdgeMap seam_edge_map)
@@ -64,7 +65,7 @@ void write_glued_outputs(const TriangleMesh& mesh, const Surface& surface, const
     const int i = state.corner_uv[std::size_t(fe)];
     const auto h = surface.face_edge_halfedge(fe);
     put(uvmap, opposite(h, mesh), Point_2(state.x[2*i], state.x[2*i+1]));
-    put(seam_edge_map, edge(h, mesh), bool(state.is_cut[std::size_t(surface.edge_of[std::size_t(fe)])]));
+    put(seam_edge_map, edge(h, mesh), false);
   }
 }
 
