@@ -29,7 +29,7 @@ for mesh in "$out"/meshes/*.obj; do
   start=$(date +%s.%N)
   "$build/bin/uv_unwrap" --quiet "$mesh" -o "$out/ours/$name.obj" >/dev/null 2>&1 || true
   ours_time=$(echo "$(date +%s.%N) - $start" | bc)
-  smart_time=$(blender -b --factory-startup --python "$root/scripts/blender_smart_uv_project.py" -- \
+  smart_time=$(blender -b --factory-startup --python "$root/benchmark/python_blender/smart_uv_project.py" -- \
                  "$mesh" "$out/smart_uv/$name.obj" 2>/dev/null | sed -n 's/^SMART_UV_SECONDS //p')
   ours=$("$python" "$metrics" "$out/ours/$name.obj" 2>/dev/null || echo "")
   smart=$("$python" "$metrics" "$out/smart_uv/$name.obj" 2>/dev/null || echo "")

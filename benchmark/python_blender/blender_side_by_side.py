@@ -19,6 +19,9 @@ import time
 import bpy
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from smart_uv_project import export_obj as export, import_obj, smart_project  # noqa: E402
+
 DISKS = ["bunnyhead", "hand1", "cat", "bimba", "bimba_i_f10000", "armadillo_i_f10000", "duck1", "planck1",
          "venus", "tooth", "circular_box_o_f20000", "face_f10000", "max_planck_i_f8000", "lion_o_f10000",
          "hand_1_i_f5000"]
@@ -66,15 +69,7 @@ def charts(mesh):
 
 def fresh(path):
     empty_scene()
-    bpy.ops.wm.obj_import(filepath=path)
-    obj = bpy.context.selected_objects[0]
-    bpy.context.view_layer.objects.active = obj
-    return obj
-
-
-def export(path):
-    bpy.ops.wm.obj_export(filepath=path, export_selected_objects=True, export_uv=True, export_normals=False,
-                          export_materials=False, apply_modifiers=False)
+    return import_obj(path)
 
 
 def main():
@@ -92,12 +87,7 @@ def main():
             path = os.path.join(mesh_dir, "uvat", name + ".obj")
         obj = fresh(path)
         faces = len(obj.data.polygons)
-        bpy.ops.object.mode_set(mode='EDIT')
-        bpy.ops.mesh.select_all(action='SELECT')
-        start = time.perf_counter()
-        bpy.ops.uv.smart_project()
-        smart_s = time.perf_counter() - start
-        bpy.ops.object.mode_set(mode='OBJECT')
+        smart_s = smart_project()
         smart_charts = charts(obj.data)
         export(os.path.join(out_dir, name + "_smart_uv.obj"))
 
