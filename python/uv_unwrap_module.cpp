@@ -485,5 +485,6 @@ measures of every page on the combined UVs of its meshes: flipped_faces, border_
 uv_coverage). Raises UnwrapError (name ERROR_WRONG_PARAMETER) when a mesh does not fit one page at the
 density given.)doc";
   m.def("unwrap_scene", &unwrap_scene, py::arg("meshes"), py::kw_only(), CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_KEYWORD)
-        py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("hide_seams") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = py::none(),
-        scene_documentation.c_str());
+        py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("hide_seams") = py::none(),
+        py::arg("progress") = py::none(), py::arg("threads") = py::none(), scene_documentation.c_str());
+}
