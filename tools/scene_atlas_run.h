@@ -97,8 +97,8 @@ inline Scene_packing pack_scene(std::vector<Scene_part>& parts, const SMP::Cut_p
     throw Failure(std::string("packing the scene atlas failed: ") + SMP::error_message(r.error) + " (" +
                     SMP::error_name(r.error) + ")" +
                     (r.error == SMP::ERROR_WRONG_PARAMETER && options.texels_per_unit > 0.
-                       ? ": a mesh whose charts do not fit one page at --texels-per-unit (lower it or raise "
-                         "--atlas-size)"
+                       ? ": a mesh whose charts do not fit one page at the texel density given (lower it, or "
+                         "raise the page size: --texels-per-unit, --atlas-size)"
                        : ""),
                   SMP::error_name(r.error));
   Scene_packing packing;
