@@ -325,6 +325,7 @@ protected:
   std::vector<fs::path> inputs;
   void SetUp() override
   {
+    ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
     dir = fs::temp_directory_path() / ("uv_unwrap_scene_atlas_" + std::to_string(::getpid()) + "_" +
                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir);
@@ -394,12 +395,6 @@ TEST_F(Scene_atlas_cli, density_without_atlas_is_refused)
 int main(int argc, char** argv)
 {
   ::testing::InitGoogleTest(&argc, argv);
-  const char* program = std::getenv("UV_UNWRAP");
-  if(!program || !*program)
-  {
-    std::cerr << "set UV_UNWRAP to the uv_unwrap executable" << std::endl;
-    return 2;
-  }
-  uv_unwrap_program = program;
+  if(const char* program = std::getenv("UV_UNWRAP")) uv_unwrap_program = program;
   return RUN_ALL_TESTS();
 }

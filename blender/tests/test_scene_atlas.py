@@ -150,6 +150,8 @@ def gltf_uv_set(program):
         check(len(stats) == 1 and stats[0]["atlas"]["page_count"] == 1 and len(stats[0]["atlas"]["pages"]) == 2,
               "the statistics give the page of each of the 2 meshes")
         empty_scene()
+        if not hasattr(np, "bool"):  # Debian's Blender 3.4 importer uses np.bool, gone from numpy 1.24
+            np.bool = bool
         bpy.ops.import_scene.gltf(filepath=os.path.join(out, "scene_uv.glb"))
     meshes = [o for o in bpy.data.objects if o.type == 'MESH']
     check(len(meshes) == 2, "Blender imports the 2 meshes of the result")
@@ -160,9 +162,9 @@ def gltf_uv_set(program):
             continue
         _, first = triangles(o, layers[0].name)
         name = o.name.split(".")[0]
-        if name in before and before[name].shape == first.shape:
-            check(np.allclose(np.sort(first.reshape(-1, 2), axis=0), np.sort(before[name].reshape(-1, 2), axis=0),
-                              atol=1e-6), "%s: the material's UV map is kept" % o.name)
+        distinct = lambda uv: {tuple(p) for p in np.round(uv.reshape(-1, 2), 4)}
+        check(name in before and distinct(first) == distinct(before[name]),
+              "%s: the material's UV map is kept (its distinct UVs)" % o.name)
         _, second = triangles(o, layers[1].name)
         check(second.min() >= 0 and second.max() <= 1 and not np.allclose(second, first),
               "%s: the lightmap UV map is in [0,1] and differs from the first" % o.name)
