@@ -84,6 +84,6 @@ class Job:
     def summary(self):
         parts = ["%s: %d charts, E_d %.3f, E_s %.2f%s" % (o.name, r.stats["charts"], r.stats["distortion"],
                                                          r.stats["seam_length"],
-                                                         ", page %d" % r.page if r.page >= 0 else "")
+                                                         ", page %d" % r.page if getattr(r, "page", -1) >= 0 else "")
                  for o, r in zip(self.objects, self.results)]
         return "; ".join(parts) + " (%.1f s)" % self.seconds
