@@ -4,10 +4,11 @@
 // the combined UVs of all the meshes of a page no crossing of UV borders and
 // no texel covered twice; the texel density (UV length per 3D length) of
 // every mesh the one reported, within 1%; the statistics give each mesh's
-// page; the glTF passes the Khronos glTF-Validator. At more than the density that
-// fits one page (1.3 times) the scene goes on several pages, each valid. --uv-set 1 adds
-// TEXCOORD_1 to the glTF (TEXCOORD_0 kept) and writes an OBJ's one set with a
-// warning; --texels-per-unit without --atlas is refused.
+// page; the glTF passes the Khronos glTF-Validator. At 1.3 times the largest
+// density that fits one page the scene goes on several pages, each valid,
+// and --svg frames every page. --uv-set 1 adds TEXCOORD_1 to the glTF
+// (TEXCOORD_0 kept) and writes an OBJ's one set with a warning;
+// --texels-per-unit without --atlas is refused.
 //   UV_UNWRAP=<uv_unwrap executable> test_scene_atlas_cli
 #include "tests/gltf_test_files.h"
 
@@ -20,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -360,9 +362,17 @@ TEST_F(Scene_atlas_cli, pages_when_one_is_not_enough)
   nlohmann::json stats;
   run_scene(dir, inputs, "--atlas-size 256", 0, stats);
   const double one_page = stats["atlas"]["texels_per_unit"].get<double>();
-  const std::vector<Written_mesh> meshes =
-    run_scene(dir, inputs, "--atlas-size 256 --texels-per-unit " + std::to_string(1.3 * one_page), 0, stats);
+  const fs::path svg = dir / "pages.svg";
+  const std::vector<Written_mesh> meshes = run_scene(
+    dir, inputs, "--atlas-size 256 --texels-per-unit " + std::to_string(1.3 * one_page) + " --svg \"" + svg.string() + "\"",
+    0, stats);
   const int pages = stats["atlas"]["page_count"].get<int>();
+  // the SVG frames every page
+  std::ifstream in(svg);
+  const std::string picture((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for(int page = 0; page <= pages; ++page)
+    EXPECT_EQ(picture.find("<rect id=\"page-" + std::to_string(page) + "\"") != std::string::npos, page < pages)
+      << "page " << page << " of " << pages << " in the SVG";
   EXPECT_GE(pages, 2) << "1.3 times the largest density that fits one page";
   EXPECT_NEAR(stats["atlas"]["texels_per_unit"].get<double>(), 1.3 * one_page, 1e-6 * one_page);
   expect_valid_pages(meshes, pages, 1.3 * one_page, 256);
