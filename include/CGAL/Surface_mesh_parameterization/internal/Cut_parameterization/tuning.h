@@ -155,8 +155,16 @@ constexpr double constrained_tolerance = 1e-5;
 constexpr double box_tolerance = 1e-4;
 /// the box's solve where the cuts came from a simplified copy (each iteration a solve of the whole mesh)
 constexpr double large_mesh_box_tolerance = 1e-3;
+/// the box's solve stops in a slow tail: after this many iterations, ...
+constexpr int box_slow_tail_after = 60;
+/// ... less than this ratio of the energy gained over this window (steps stopped at barrier contacts)
+constexpr int box_slow_tail_window = 20;
+constexpr double box_slow_tail_ratio = 1e-3;
 /// a crossing chart overlapping itself on more than this many faces is cut into overlap-free pieces
 constexpr int overlap_partition_faces = 10000;
+/// so is one whose Tutte map has an E_d above this (holes of a CAD part on one circle): the barrier's solve
+/// from it crawls, each step stopped where a border vertex meets a segment
+constexpr double tutte_restart_max_distortion = 1000.;
 /// after greedy splits on a cut mesh of at most this many faces, the split map is also solved in pieces
 constexpr int split_pieces_max_faces = 1000;
 /// Newton iterations at most of each solve of those pieces (their barrier converges slowly)

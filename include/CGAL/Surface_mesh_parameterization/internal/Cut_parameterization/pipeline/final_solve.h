@@ -70,7 +70,12 @@ inline Error_code final_minimization(const Final_solve_args& args, bool injectiv
   const double tolerance = args.tolerance_factor
                            * (stiffness > 0. ? args.box.tolerance
                                              : (injective || boxed ? tuning::constrained_tolerance : tuning::final_tolerance));
-  const Newton_report report = minimizer.minimize(state.x, args.max_iterations, tolerance);
+  // the box's solve stops in a slow tail: where the box pushes borders against the barrier,
+  // each step is cut short at a contact while the Newton decrement stays above the tolerance
+  const Slow_tail tail = stiffness > 0. ? Slow_tail{tuning::box_slow_tail_after, tuning::box_slow_tail_window,
+                                                    tuning::box_slow_tail_ratio}
+                                        : Slow_tail{};
+  const Newton_report report = minimizer.minimize(state.x, args.max_iterations, tolerance, tail);
   (stiffness > 0. ? log.box_work : log.final_work) += log.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
@@ -115,6 +120,46 @@ bool cut_into_overlap_free_pieces(const Surface& surface, const std::vector<char
   return true;
 }
 
+/// Per chart of `mesh` (ids of chart_of_faces()): the E_d of the map `x`.
+inline std::vector<double> chart_distortions(const Chart_mesh& mesh, const UV_vector& x)
+{
+  int charts = 0;
+  const std::vector<int> chart_of_face = chart_of_faces(mesh, charts);
+  std::vector<double> sum(std::size_t(charts), 0.), area(std::size_t(charts), 0.);
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    const std::size_t c = std::size_t(chart_of_face[f]);
+    sum[c] += mesh.area[f] * symmetric_dirichlet_measure(mesh.jacobian(x, f));
+    area[c] += mesh.area[f];
+  }
+  for(std::size_t c = 0; c < sum.size(); ++c) sum[c] /= area[c];
+  return sum;
+}
+
+/// True if some chart of the map `x` of `mesh` has an E_d above
+/// tuning::tutte_restart_max_distortion: as a start, that Tutte map would
+/// make the barrier's solve crawl.
+inline bool too_distorted_for_the_barrier(const Chart_mesh& mesh, const UV_vector& x)
+{
+  const std::vector<double> distortion = chart_distortions(mesh, x);
+  return std::any_of(distortion.begin(), distortion.end(),
+                     [](double d) { return !(d <= tuning::tutte_restart_max_distortion); });
+}
+
+/// Per chart of `state` (ids of chart_of_faces()): the E_d of its Tutte map
+/// (disk_charts_embedding()), infinite where there is none.
+inline std::vector<double> tutte_distortions(const Map_state& state)
+{
+  UV_vector tutte;
+  if(disk_charts_embedding(state.chart, tutte) != Embedding_status::OK)
+  {
+    int charts = 0;
+    chart_of_faces(state.chart, charts);
+    return std::vector<double>(std::size_t(charts), std::numeric_limits<double>::infinity());
+  }
+  return chart_distortions(state.chart, tutte);
+}
+
 /// The charts of `state` flagged in `crossing` put back to a valid start:
 /// the carried map where `carried` holds a valid map of the chart, else the
 /// Tutte map (whose border is convex).
@@ -148,15 +193,22 @@ inline Error_code restart_crossing_charts(const std::vector<char>& crossing, con
 /// valid start (restart_crossing_charts(), `carried`: the map the splits
 /// started from, carried over their cuts) for final_solve_box() to solve
 /// again under the border barrier; a crossing chart without a carried map
-/// that overlaps itself on more than `args.overlap_partition_faces` faces is
-/// cut into overlap-free pieces instead, each from its part of the map. From
-/// a Tutte map (`from_tutte_map`) the barrier is on from the first solve.
+/// that overlaps itself on more than `args.overlap_partition_faces` faces,
+/// or whose Tutte map has an E_d above tuning::tutte_restart_max_distortion
+/// (the holes of a CAD part squashed onto one circle: from there each of
+/// hundreds of barrier steps is cut short where a border vertex meets a
+/// segment), is cut into overlap-free pieces instead, each from its part of
+/// the map. From a Tutte map (`from_tutte_map`) the barrier is on from the
+/// first solve, unless that map is above that E_d (args.overlap_partition_faces
+/// > 0): it is then solved without, its crossing charts cut into pieces.
 template <typename Surface>
 Error_code final_solve_without_box(const Surface& surface, const Final_solve_args& args, bool from_tutte_map,
                                    Map_state& state, Work_log& log, Unboxed_final_map& unboxed,
                                    const Carried_map* carried = nullptr)
 {
-  const bool barrier_first = args.global_injectivity && from_tutte_map;
+  // a Tutte map too distorted for the barrier is solved without it first (see above)
+  const bool barrier_first = args.global_injectivity && from_tutte_map
+                             && !(args.overlap_partition_faces > 0 && too_distorted_for_the_barrier(state.chart, state.x));
   const Error_code status =
     final_minimization(args, barrier_first, 0., args.box.final_stiffness() > 0., state, log);
   if(status != OK) return status;
@@ -170,10 +222,18 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
   if(args.overlap_partition_faces > 0)
   {
     const std::vector<std::size_t> overlapping = self_overlapping_face_counts(state.chart, state.x);
+    std::vector<double> tutte_distortion; // computed where needed
     std::vector<char> cut_up(crossing.size(), 0);
     for(std::size_t c = 0; c < crossing.size(); ++c)
-      cut_up[c] = crossing[c] && !carried_valid(int(c))
-                  && overlapping[c] > std::size_t(args.overlap_partition_faces);
+    {
+      if(!crossing[c] || carried_valid(int(c))) continue;
+      if(overlapping[c] > std::size_t(args.overlap_partition_faces)) cut_up[c] = 1;
+      else
+      {
+        if(tutte_distortion.empty()) tutte_distortion = tutte_distortions(state);
+        cut_up[c] = tutte_distortion[c] > tuning::tutte_restart_max_distortion;
+      }
+    }
     if(std::find(cut_up.begin(), cut_up.end(), 1) != cut_up.end() && cut_into_overlap_free_pieces(surface, cut_up, state))
     {
       carried = nullptr; // its charts are those of the chart mesh before
