@@ -134,10 +134,10 @@ void copy_stacked_outputs(const Surface& from_surface, const SceneAtlasMesh& fro
 /// \ingroup PkgCutParameterizationRef
 ///
 /// Finds the meshes of a scene that are copies of an earlier one (stacked
-/// parts): the same faces over the same vertex numbering (as
-/// `index_surface` numbers them: the order of `vertices(mesh)` and
-/// `faces(mesh)`), and vertices that a rotation and a translation (the
-/// least-squares fit, Kabsch; no reflection) move onto the original's within
+/// parts): the same faces over the same vertex numbering (the order of
+/// `vertices(mesh)` and `faces(mesh)`, vertices in no face left out), and
+/// vertices that a rotation and a translation (the least-squares fit,
+/// Kabsch; no reflection) move onto the original's within
 /// `stacking_tolerance` times the original's bounding box diagonal. A caller
 /// may unwrap only the originals, then give `stacked_on` to
 /// `pack_scene_atlas()` as its `instance_of`: every copy gets its original's
