@@ -11,6 +11,7 @@
 #include "mesh_output.h"
 #include "output_formats.h"
 #include "seam_constraints.h"
+#include "gltf_split_normals.h"
 #include "split_normals.h"
 #include "unwrap_run.h"
 #include "uv_unwrap_options.h"
@@ -487,6 +488,8 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
       auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
       auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
+      if(options.method.hard_edge_angle && corner_halfedges.empty()) // hard edges: the split NORMALs too
+        split_normals::flag_gltf_split_normal_edges(doc, ref, t, mesh, seams);
       Run_summary part;
       part.input = name;
       if(!options.quiet)
