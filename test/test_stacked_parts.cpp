@@ -4,7 +4,9 @@
 // exactly as the box and the grid alone (same charts, same density, same
 // UVs), every copy with the box's UVs and seams; a mirror image and a
 // copy deformed beyond the tolerance are packed on their own; wrong
-// instances are refused.
+// instances are refused; the same on Polyhedron_3 (any FaceGraph, maps of
+// any kind).
+#include "cut_result_checks.h"
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
@@ -196,4 +198,54 @@ TEST(Stacked_parts, wrong_instances_are_refused_and_nothing_is_written)
               SMP::ERROR_WRONG_PARAMETER);
   EXPECT_EQ(SMP::pack_scene_atlas(scene.atlas_meshes(), P::stacking_tolerance(-1.)).error, SMP::ERROR_WRONG_PARAMETER);
   EXPECT_EQ(scene.uv[0][*halfedges(scene.meshes[0]).begin()], before);
+}
+
+template <typename Mesh>
+class Stacked_parts_typed : public ::testing::Test {};
+TYPED_TEST_SUITE(Stacked_parts_typed, cut_test::Mesh_types);
+
+TYPED_TEST(Stacked_parts_typed, copies_found_get_the_uvs_and_seams_of_their_original_corner_by_corner)
+{
+  std::vector<TypeParam> meshes;
+  meshes.reserve(4);
+  meshes.push_back(cut_test::make_mesh<TypeParam>(cut_test::box_soup(1., 2., 3.)));
+  for(int i = 1; i < 4; ++i) meshes.push_back(cut_test::make_mesh<TypeParam>(moved(cut_test::box_soup(1., 2., 3.), i, 5. * i)));
+  std::vector<cut_test::Cut_run<TypeParam>> runs;
+  runs.reserve(meshes.size());
+  for(const TypeParam& m : meshes) runs.emplace_back(m);
+  ASSERT_TRUE(runs[0].run(P::hard_edge_angle(30.)).ok());
+  using Run = cut_test::Cut_run<TypeParam>;
+  using Scene_mesh = SMP::Scene_atlas_mesh<TypeParam, decltype(std::declval<Run&>().seams()),
+                                           decltype(std::declval<Run&>().uvs())>;
+  std::vector<Scene_mesh> scene;
+  std::vector<const TypeParam*> pointers;
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    scene.push_back(SMP::make_scene_atlas_mesh(meshes[m], runs[m].seams(), runs[m].uvs()));
+    pointers.push_back(&meshes[m]);
+  }
+  std::vector<int> stacked_on;
+  ASSERT_EQ(SMP::find_stacked_meshes(pointers, stacked_on), SMP::OK);
+  EXPECT_EQ(stacked_on, (std::vector<int>{0, 0, 0, 0}));
+  const SMP::Scene_atlas_result r = SMP::pack_scene_atlas(scene, P::instance_of(stacked_on, P::texture_size(128)));
+  ASSERT_EQ(r.error, SMP::OK);
+  EXPECT_EQ(r.number_of_charts, 6u);
+  for(std::size_t m = 1; m < meshes.size(); ++m)
+  {
+    std::size_t differences = 0, corners = 0;
+    auto f0 = faces(meshes[0]).begin();
+    for(auto f : faces(meshes[m]))
+    {
+      auto h0 = halfedge(*f0++, meshes[0]);
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, meshes[m]), meshes[m]))
+      {
+        differences += !(runs[m].uv(h) == runs[0].uv(h0)) + (runs[m].is_seam(edge(h, meshes[m])) !=
+                                                             runs[0].is_seam(edge(h0, meshes[0])));
+        ++corners;
+        h0 = next(h0, meshes[0]);
+      }
+    }
+    EXPECT_EQ(corners, 36u);
+    EXPECT_EQ(differences, 0u) << "copy " << m;
+  }
 }

@@ -10,7 +10,8 @@
 // cannot run, and is skipped when the build turns it off
 // (-DCUT_PARAM_GLTF_VALIDATOR=OFF). Every output format that --help lists
 // (tools/output_formats.h) is written, by -o's extension and by --format, and
-// reads back with texture coordinates.
+// reads back with texture coordinates. With --hard-edge-angle, a
+// primitive's split NORMALs are seams (tools/gltf_split_normals.h).
 //   UV_UNWRAP=<uv_unwrap executable> test_gltf_round_trip
 #include "tests/gltf_test_files.h"
 
