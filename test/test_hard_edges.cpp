@@ -28,7 +28,7 @@ TYPED_TEST_SUITE(Hard_edges, cut_test::Mesh_types);
 
 /// Edges of `mesh` between two faces that are not coplanar (the box's 12 sides' edges).
 template <typename Mesh>
-bool is_sharp(const Mesh& mesh, typename boost::graph_traits<Mesh>::edge_descriptor e)
+bool is_sharp_box_edge(const Mesh& mesh, typename boost::graph_traits<Mesh>::edge_descriptor e)
 {
   const auto h = halfedge(e, mesh);
   auto normal = [&](typename boost::graph_traits<Mesh>::halfedge_descriptor g) {
@@ -53,7 +53,7 @@ TYPED_TEST(Hard_edges, every_edge_of_a_box_is_a_seam_at_30_degrees)
   std::size_t sharp = 0, sharp_seams = 0, flat_seams = 0;
   for(auto e : edges(mesh))
   {
-    const bool s = is_sharp(mesh, e);
+    const bool s = is_sharp_box_edge(mesh, e);
     sharp += s;
     (s ? sharp_seams : flat_seams) += run.is_seam(e);
   }
@@ -100,7 +100,7 @@ TEST(Hard_edges, a_forbidden_hard_edge_is_not_cut)
   for(auto e : edges(mesh))
   {
     forbidden[e] = false;
-    if(kept == Surface_mesh::Edge_index() && is_sharp(mesh, e)) kept = e;
+    if(kept == Surface_mesh::Edge_index() && is_sharp_box_edge(mesh, e)) kept = e;
   }
   forbidden[kept] = true;
   cut_test::Cut_run<Surface_mesh> run(mesh);

@@ -27,12 +27,12 @@ namespace {
 
 using halfedge_descriptor = boost::graph_traits<Surface_mesh>::halfedge_descriptor;
 using edge_descriptor = boost::graph_traits<Surface_mesh>::edge_descriptor;
-using UV_map = Surface_mesh::Property_map<halfedge_descriptor, cut_test::Point_2>;
-using Seam_map = Surface_mesh::Property_map<edge_descriptor, bool>;
-using Atlas_mesh = SMP::Scene_atlas_mesh<Surface_mesh, Seam_map, UV_map>;
+using Stacked_uv_map = Surface_mesh::Property_map<halfedge_descriptor, cut_test::Point_2>;
+using Stacked_seam_map = Surface_mesh::Property_map<edge_descriptor, bool>;
+using Stacked_atlas_mesh = SMP::Scene_atlas_mesh<Surface_mesh, Stacked_seam_map, Stacked_uv_map>;
 
 /// `s` turned by `angle` about the axis (1, 2, 2)/3 (a rotation, det +1), then moved by `shift`.
-Soup moved(Soup s, double angle, double shift)
+Soup rigidly_moved(Soup s, double angle, double shift)
 {
   const double a[3] = {1. / 3., 2. / 3., 2. / 3.}, c = std::cos(angle), si = std::sin(angle);
   return s.transform([&](const Soup::Point& p) {
@@ -47,12 +47,12 @@ Soup moved(Soup s, double angle, double shift)
 /// The meshes of a scene with their seams and UVs: mesh 0 a 1x2x3 box unwrapped
 /// with its hard edges as seams, mesh 1 a flat grid (UV = xy), then the `extra`
 /// soups with no UV and no seam (their faces and vertices numbered as the box's).
-struct Scene
+struct Stacked_scene
 {
   std::vector<Surface_mesh> meshes;
-  std::vector<UV_map> uv;
-  std::vector<Seam_map> seams;
-  explicit Scene(const std::vector<Soup>& extra)
+  std::vector<Stacked_uv_map> uv;
+  std::vector<Stacked_seam_map> seams;
+  explicit Stacked_scene(const std::vector<Soup>& extra)
   {
     meshes.reserve(2 + extra.size());
     meshes.push_back(cut_test::make_mesh<Surface_mesh>(cut_test::box_soup(1., 2., 3.)));
@@ -72,9 +72,9 @@ struct Scene
       uv[1][h] = cut_test::Point_2(p.x(), p.y());
     }
   }
-  std::vector<Atlas_mesh> atlas_meshes() const
+  std::vector<Stacked_atlas_mesh> atlas_meshes() const
   {
-    std::vector<Atlas_mesh> r;
+    std::vector<Stacked_atlas_mesh> r;
     for(std::size_t m = 0; m < meshes.size(); ++m) r.push_back(SMP::make_scene_atlas_mesh(meshes[m], seams[m], uv[m]));
     return r;
   }
@@ -108,10 +108,10 @@ struct Scene
   }
 };
 
-std::vector<Soup> ten_copies()
+std::vector<Soup> ten_box_copies()
 {
   std::vector<Soup> copies;
-  for(int i = 0; i < 10; ++i) copies.push_back(moved(cut_test::box_soup(1., 2., 3.), 0.4 + 0.55 * i, 3. * i));
+  for(int i = 0; i < 10; ++i) copies.push_back(rigidly_moved(cut_test::box_soup(1., 2., 3.), 0.4 + 0.55 * i, 3. * i));
   return copies;
 }
 
@@ -119,7 +119,7 @@ std::vector<Soup> ten_copies()
 
 TEST(Stacked_parts, ten_copies_of_a_box_use_the_texels_of_one)
 {
-  Scene alone({});
+  Stacked_scene alone({});
   const SMP::Scene_atlas_result reference = SMP::pack_scene_atlas(alone.atlas_meshes(), P::texture_size(256));
   ASSERT_EQ(reference.error, SMP::OK);
   EXPECT_EQ(reference.number_of_charts, 7u); // the box's 6 sides and the grid
@@ -127,7 +127,7 @@ TEST(Stacked_parts, ten_copies_of_a_box_use_the_texels_of_one)
 
   for(bool told : {false, true})
   {
-    Scene scene(ten_copies());
+    Stacked_scene scene(ten_box_copies());
     std::vector<int> instance_of(scene.meshes.size(), -1);
     for(std::size_t m = 2; m < scene.meshes.size(); ++m) instance_of[m] = 0;
     const SMP::Scene_atlas_result r =
@@ -160,11 +160,11 @@ TEST(Stacked_parts, a_mirror_image_or_a_deformed_copy_is_not_stacked)
 {
   Soup mirrored = cut_test::box_soup(1., 2., 3.);
   mirrored.transform([](const Soup::Point& p) { return Soup::Point{-p[0], p[1], p[2]}; });
-  Soup deformed = moved(cut_test::box_soup(1., 2., 3.), 1., 2.);
+  Soup deformed = rigidly_moved(cut_test::box_soup(1., 2., 3.), 1., 2.);
   deformed.points[7][2] += 0.01; // 0.0027 of the diagonal (3.74), beyond 1e-4
-  Soup within = moved(cut_test::box_soup(1., 2., 3.), 2., -1.);
+  Soup within = rigidly_moved(cut_test::box_soup(1., 2., 3.), 2., -1.);
   within.points[7][2] += 1e-5; // 2.7e-6 of the diagonal
-  Scene scene({mirrored, deformed, within});
+  Stacked_scene scene({mirrored, deformed, within});
   scene.copy_box_input(2);
   scene.copy_box_input(3);
   const SMP::Scene_atlas_result r =
@@ -187,7 +187,7 @@ TEST(Stacked_parts, a_mirror_image_or_a_deformed_copy_is_not_stacked)
 
 TEST(Stacked_parts, wrong_instances_are_refused_and_nothing_is_written)
 {
-  Scene scene({moved(cut_test::box_soup(1., 2., 3.), 1., 1.)});
+  Stacked_scene scene({rigidly_moved(cut_test::box_soup(1., 2., 3.), 1., 1.)});
   const cut_test::Point_2 before = scene.uv[0][*halfedges(scene.meshes[0]).begin()];
   for(const std::vector<int>& instance_of :
       {std::vector<int>{-1, 0, -1},  // the grid is no box
@@ -209,7 +209,7 @@ TYPED_TEST(Stacked_parts_typed, copies_found_get_the_uvs_and_seams_of_their_orig
   std::vector<TypeParam> meshes;
   meshes.reserve(4);
   meshes.push_back(cut_test::make_mesh<TypeParam>(cut_test::box_soup(1., 2., 3.)));
-  for(int i = 1; i < 4; ++i) meshes.push_back(cut_test::make_mesh<TypeParam>(moved(cut_test::box_soup(1., 2., 3.), i, 5. * i)));
+  for(int i = 1; i < 4; ++i) meshes.push_back(cut_test::make_mesh<TypeParam>(rigidly_moved(cut_test::box_soup(1., 2., 3.), i, 5. * i)));
   std::vector<cut_test::Cut_run<TypeParam>> runs;
   runs.reserve(meshes.size());
   for(const TypeParam& m : meshes) runs.emplace_back(m);
