@@ -39,6 +39,7 @@ struct Result
   py::array_t<std::int64_t> face_charts; // (m,), -1 for a face the repair dropped
   py::dict stats;                      // uv_unwrap --stats
   std::vector<std::string> warnings;
+  int page = -1;                       // unwrap_scene(): the atlas page of the mesh; unwrap(): -1
 };
 
 // The chart of each face: faces joined across edges that are neither seams

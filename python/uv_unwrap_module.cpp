@@ -16,6 +16,7 @@
 // Ctrl-C) takes it back for each report.
 #include "blas_setup.h"
 #include "mesh_input.h"
+#include "scene_atlas_run.h"
 #include "seam_constraints.h"
 #include "unwrap_arguments.h"
 #include "unwrap_result.h"
@@ -31,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -85,55 +87,67 @@ struct One_blas_thread
 #define CUT_PARAM_PY_GIVEN(FIELD, ...) FIELD,
 #define CUT_PARAM_PY_KEYWORD(FIELD, ...) keyword_argument(#FIELD),
 
-Result unwrap(const py::object& V_object, const py::object& F_object,
-              CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_PARAMETER) const py::object& seams_object,
-              const py::object& forbidden_object, const py::object& face_weights_object, const py::object& hide_seams,
-              const py::object& progress, const py::object& threads)
+// One mesh's arrays checked and converted; `prefix` names it in messages ("meshes[2]: ").
+struct Arrays
 {
-  const std::vector<py::object> given{CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_GIVEN)};
-  const auto V = as_doubles(checked_array(V_object, "V", 3, "fiu", "numbers (float or integer coordinates)"));
-  const auto F = as_indices(checked_array(F_object, "F", 3, "iu", "integer vertex indices"));
-  const std::size_t n = std::size_t(V.shape(0)), m = std::size_t(F.shape(0));
-  if(m == 0) throw py::value_error("F has no faces: nothing to unwrap");
-
   std::vector<mesh_input::File_point> file_points;
   std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  seam_constraints::Edge_pairs seam_pairs, forbidden_pairs;
+  std::vector<double> weights;
+};
+
+Arrays read_arrays(const py::object& V_object, const py::object& F_object, const py::object& seams_object,
+                   const py::object& forbidden_object, const py::object& face_weights_object,
+                   const std::string& prefix = "")
+{
+  Arrays arrays;
+  std::vector<mesh_input::File_point>& file_points = arrays.file_points;
+  std::vector<Point_3>& points = arrays.points;
+  std::vector<std::vector<std::size_t>>& polygons = arrays.polygons;
+  std::vector<std::array<std::size_t, 3>>& triangles = arrays.triangles;
+  const std::string V_name = prefix + "V", F_name = prefix + "F";
+  const auto V = as_doubles(checked_array(V_object, V_name.c_str(), 3, "fiu", "numbers (float or integer coordinates)"));
+  const auto F = as_indices(checked_array(F_object, F_name.c_str(), 3, "iu", "integer vertex indices"));
+  const std::size_t n = std::size_t(V.shape(0)), m = std::size_t(F.shape(0));
+  if(m == 0) throw py::value_error(prefix + "F has no faces: nothing to unwrap");
+
   file_points.reserve(n);
   points.reserve(n);
   const auto v = V.unchecked<2>();
   for(std::size_t i = 0; i < n; ++i)
   {
     if(!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1)) || !std::isfinite(v(i, 2)))
-      throw py::value_error("V[" + std::to_string(i) + "] = (" + std::to_string(v(i, 0)) + ", " +
+      throw py::value_error(prefix + "V[" + std::to_string(i) + "] = (" + std::to_string(v(i, 0)) + ", " +
                             std::to_string(v(i, 1)) + ", " + std::to_string(v(i, 2)) +
                             ") has a non-finite coordinate");
     file_points.emplace_back(v(i, 0), v(i, 1), v(i, 2));
     points.emplace_back(v(i, 0), v(i, 1), v(i, 2));
   }
-  std::vector<std::vector<std::size_t>> polygons(m);
-  std::vector<std::array<std::size_t, 3>> triangles(m);
+  polygons.resize(m);
+  triangles.resize(m);
   const auto f = F.unchecked<2>();
   for(std::size_t j = 0; j < m; ++j)
     for(int k = 0; k < 3; ++k)
     {
       if(f(j, k) < 0 || std::size_t(f(j, k)) >= n)
-        throw py::index_error("F[" + std::to_string(j) + ", " + std::to_string(k) + "] = " +
+        throw py::index_error(prefix + "F[" + std::to_string(j) + ", " + std::to_string(k) + "] = " +
                               std::to_string(f(j, k)) + " is not a vertex index (V has " + std::to_string(n) +
                               " rows)");
       polygons[j].push_back(std::size_t(f(j, k)));
       triangles[j][k] = std::size_t(f(j, k));
     }
-  const seam_constraints::Edge_pairs seam_pairs = edge_pairs(seams_object, "seams", n);
-  const seam_constraints::Edge_pairs forbidden_pairs = edge_pairs(forbidden_object, "forbidden", n);
+  arrays.seam_pairs = edge_pairs(seams_object, "seams", n);
+  arrays.forbidden_pairs = edge_pairs(forbidden_object, "forbidden", n);
   {
     std::set<std::pair<std::size_t, std::size_t>> cut;
-    for(const auto& [a, b] : seam_pairs) cut.emplace(std::min(a, b), std::max(a, b));
-    for(const auto& [a, b] : forbidden_pairs)
+    for(const auto& [a, b] : arrays.seam_pairs) cut.emplace(std::min(a, b), std::max(a, b));
+    for(const auto& [a, b] : arrays.forbidden_pairs)
       if(cut.count({std::min(a, b), std::max(a, b)}))
         throw py::value_error("the edge (" + std::to_string(a) + ", " + std::to_string(b) +
                               ") is both in seams (to cut) and in forbidden (never to cut)");
   }
-  std::vector<double> weights;
   if(!face_weights_object.is_none())
   {
     const auto w = as_doubles(checked_array(face_weights_object, "face_weights", 0, "fiu", "numbers"));
@@ -146,22 +160,45 @@ Result unwrap(const py::object& V_object, const py::object& F_object,
       if(!(r(j) > 0.) || !std::isfinite(r(j)))
         throw py::value_error("face_weights[" + std::to_string(j) + "] = " + std::to_string(r(j)) +
                               " (seam cost factors must be positive and finite)");
-      weights.push_back(r(j));
+      arrays.weights.push_back(r(j));
     }
   }
-  const uv_unwrap::Options options = options_of(given, hide_seams);
+  return arrays;
+}
+
+// A mesh unwrapped from its arrays (its mesh shared with a scene atlas's parts).
+struct Unwrapped
+{
+  std::shared_ptr<Mesh> mesh = std::make_shared<Mesh>();
+  mesh_input::Input_report report;
+  uv_unwrap::Run_summary summary;
+};
+
+// The number of threads asked for (0: all); ValueError below 1.
+int thread_count_of(const py::object& threads)
+{
   int thread_count = 0;
   if(!threads.is_none())
   {
     thread_count = threads.cast<int>();
     if(thread_count < 1) throw py::value_error("threads must be at least 1");
   }
-  if(!progress.is_none() && !PyCallable_Check(progress.ptr())) throw py::type_error("progress must be callable");
+  return thread_count;
+}
 
-  Result result;
-  Mesh mesh;
-  mesh_input::Input_report report;
-  uv_unwrap::Run_summary summary;
+// Unwraps `arrays` as uv_unwrap does, the GIL released; raises the
+// progress callback's exception or the library's failure.
+void unwrap_arrays(const Arrays& arrays, const uv_unwrap::Options& options, const py::object& progress,
+                   int thread_count, Unwrapped& out)
+{
+  const auto& file_points = arrays.file_points;
+  const auto& polygons = arrays.polygons;
+  const auto& seam_pairs = arrays.seam_pairs;
+  const auto& forbidden_pairs = arrays.forbidden_pairs;
+  const auto& weights = arrays.weights;
+  Mesh& mesh = *out.mesh;
+  mesh_input::Input_report& report = out.report;
+  uv_unwrap::Run_summary& summary = out.summary;
   summary.input = "arrays";
   std::optional<Unwrap_failure> failure;
   std::optional<py::error_already_set> python_error; // raised by progress, or Ctrl-C
@@ -253,19 +290,121 @@ Result unwrap(const py::object& V_object, const py::object& F_object,
   }
   if(python_error) throw std::move(*python_error);
   if(failure) throw *failure;
+}
 
+// The Result of an unwrapped mesh, in its arrays' numbering; warnings raised as UserWarning.
+Result result_of(Unwrapped& u, const Arrays& arrays)
+{
+  Result result;
+  const Mesh& mesh = *u.mesh;
   auto seams = mesh.property_map<edge_descriptor, bool>("e:seam").first;
   auto uvmap = mesh.property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  fill_result(mesh, uvmap, seams, points, triangles, report.repaired, result);
-  for(const std::string& w : result.warnings) summary.warnings.push_back(w);
-  result.warnings = summary.warnings;
+  fill_result(mesh, uvmap, seams, arrays.points, arrays.triangles, u.report.repaired, result);
+  for(const std::string& w : result.warnings) u.summary.warnings.push_back(w);
+  result.warnings = u.summary.warnings;
   py::module_ json = py::module_::import("json");
-  result.stats = json.attr("loads")(uv_unwrap::statistics_text(summary));
+  result.stats = json.attr("loads")(uv_unwrap::statistics_text(u.summary));
   for(const std::string& w : result.warnings)
     if(PyErr_WarnEx(PyExc_UserWarning, ("uv_unwrap: " + w).c_str(), 1) != 0) throw py::error_already_set();
   return result;
 }
 
+Result unwrap(const py::object& V_object, const py::object& F_object,
+              CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_PARAMETER) const py::object& seams_object,
+              const py::object& forbidden_object, const py::object& face_weights_object, const py::object& hide_seams,
+              const py::object& progress, const py::object& threads)
+{
+  const std::vector<py::object> given{CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_GIVEN)};
+  const Arrays arrays = read_arrays(V_object, F_object, seams_object, forbidden_object, face_weights_object);
+  const uv_unwrap::Options options = options_of(given, hide_seams);
+  if(options.method.texels_per_unit != 0.)
+    throw py::value_error("texels_per_unit is the density of a scene atlas: give it to unwrap_scene()");
+  const int thread_count = thread_count_of(threads);
+  if(!progress.is_none() && !PyCallable_Check(progress.ptr())) throw py::type_error("progress must be callable");
+  Unwrapped u;
+  unwrap_arrays(arrays, options, progress, thread_count, u);
+  return result_of(u, arrays);
+}
+
+// Several meshes in one atlas (tools/scene_atlas_run.h): each unwrapped as
+// unwrap() does, then all their charts packed at one texel density.
+std::vector<Result> unwrap_scene(const py::object& meshes_object, CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_PARAMETER)
+                                 const py::object& seams_object, const py::object& forbidden_object,
+                                 const py::object& hide_seams, const py::object& progress, const py::object& threads)
+{
+  const std::vector<py::object> given{CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_GIVEN)};
+  if(!py::isinstance<py::sequence>(meshes_object) || py::isinstance<py::str>(meshes_object))
+    throw py::type_error("meshes must be a sequence of (V, F) pairs");
+  const py::sequence meshes = meshes_object.cast<py::sequence>();
+  if(meshes.size() == 0) throw py::value_error("meshes is empty: nothing to unwrap");
+  // seams= and forbidden=: None, or one entry (None or an (s, 2) array) per mesh
+  auto per_mesh = [&](const py::object& object, const char* name) {
+    std::vector<py::object> entries(meshes.size(), py::none());
+    if(object.is_none()) return entries;
+    if(!py::isinstance<py::sequence>(object) || py::len(object) != meshes.size())
+      throw py::value_error(std::string(name) + " must be None or hold one entry per mesh (" +
+                            std::to_string(meshes.size()) + ")");
+    for(std::size_t i = 0; i < meshes.size(); ++i) entries[i] = object.cast<py::sequence>()[i];
+    return entries;
+  };
+  const std::vector<py::object> seams = per_mesh(seams_object, "seams"), forbidden = per_mesh(forbidden_object, "forbidden");
+  std::vector<Arrays> arrays;
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    const std::string prefix = "meshes[" + std::to_string(i) + "]";
+    const py::object pair = meshes[i];
+    if(!py::isinstance<py::sequence>(pair) || py::len(pair) != 2)
+      throw py::type_error(prefix + " must be a (V, F) pair");
+    arrays.push_back(read_arrays(pair[py::int_(0)], pair[py::int_(1)], seams[i], forbidden[i], py::none(), prefix + ": "));
+  }
+  const uv_unwrap::Options options = options_of(given, hide_seams);
+  const int thread_count = thread_count_of(threads);
+  if(!progress.is_none() && !PyCallable_Check(progress.ptr())) throw py::type_error("progress must be callable");
+  std::vector<Unwrapped> unwrapped(arrays.size());
+  std::vector<uv_unwrap::Scene_part> parts;
+  for(std::size_t i = 0; i < arrays.size(); ++i)
+  {
+    try
+    {
+      unwrap_arrays(arrays[i], options, progress, thread_count, unwrapped[i]);
+    }
+    catch(Unwrap_failure& e)
+    {
+      e.message = "meshes[" + std::to_string(i) + "]: " + e.message;
+      throw;
+    }
+    Mesh& mesh = *unwrapped[i].mesh;
+    parts.push_back({i, "meshes[" + std::to_string(i) + "]", unwrapped[i].mesh,
+                     mesh.property_map<edge_descriptor, bool>("e:seam").first,
+                     mesh.property_map<halfedge_descriptor, Point_2>("h:uv").first, {}});
+  }
+  uv_unwrap::Scene_packing packing;
+  try
+  {
+    py::gil_scoped_release release;
+    packing = uv_unwrap::pack_scene(parts, options.method);
+  }
+  catch(const uv_unwrap::Failure& e)
+  {
+    throw Unwrap_failure{e.status, e.what()};
+  }
+  std::vector<Result> results;
+  for(std::size_t i = 0; i < arrays.size(); ++i)
+  {
+    uv_unwrap::Run_summary& s = unwrapped[i].summary;
+    const Mesh& mesh = *parts[i].mesh;
+    s.atlas = uv_unwrap::atlas_statistics(parts, i, packing);
+    s.flipped_faces = SMP::number_of_flipped_faces(mesh, parts[i].uvmap);
+    s.border_crossings = SMP::number_of_border_crossings(mesh, parts[i].uvmap);
+    s.overlap_area = SMP::uv_overlap_area(mesh, parts[i].uvmap);
+    s.result.uv_coverage = SMP::uv_area(mesh, parts[i].uvmap);
+    s.result.uv_scale = packing.texels_per_unit / options.method.texture_size;
+    s.uv_in_unit_square = packing.page[std::size_t(parts[i].page)].uv_in_unit_square;
+    results.push_back(result_of(unwrapped[i], arrays[i]));
+    results.back().page = parts[i].page;
+  }
+  return results;
+}
 } // namespace
 
 PYBIND11_MODULE(_uv_unwrap, m)
@@ -303,6 +442,7 @@ PYBIND11_MODULE(_uv_unwrap, m)
     .def_readonly("face_charts", &Result::face_charts, "(m,) int64: the chart of each face of F")
     .def_readonly("stats", &Result::stats, "dict: the statistics of `uv_unwrap --stats`")
     .def_readonly("warnings", &Result::warnings, "list of str: input repairs and remarks (also warned)")
+    .def_readonly("page", &Result::page, "int: unwrap_scene()'s atlas page of the mesh (-1 from unwrap())")
     .def("__repr__", [](const Result& r) {
       auto get = [&](const char* k) { return py::str(r.stats[k]).cast<std::string>(); };
       return "<uv_unwrap.Result: " + get("charts") + " charts, E_d " + get("distortion") + ", E_s " +
@@ -329,4 +469,22 @@ Raises TypeError / ValueError / IndexError for bad arrays, UnwrapError (with .na
         py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("face_weights") = py::none(),
         py::arg("hide_seams") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = py::none(),
         documentation.c_str());
+
+  static const std::string scene_documentation = std::string(R"doc(One texture atlas for several meshes (a scene's lightmap, say).
+
+meshes: a sequence of (V, F) pairs, each as unwrap() takes them. Each mesh is unwrapped on its own with the
+options below (those of unwrap()), then the charts of all are packed together by their shape, at one texel
+density (texels_per_unit, texels per unit of 3D length; 0: the largest at which all fit one page), into
+pages of texture_size texels per side with padding texels between charts; a mesh's charts are on one page.
+)doc") + keyword_documentation() + R"doc(seams, forbidden: None, or a list with one entry per mesh (None or (s, 2) vertex pairs), as in unwrap().
+hide_seams, progress, threads: as in unwrap().
+
+Returns a list of Result, one per mesh in order: uv in [0,1]^2 of the mesh's page, faces_uv, seams,
+face_charts, page (the page's number), stats (with "atlas": pages, page_count, texels_per_unit and the
+measures of every page on the combined UVs of its meshes: flipped_faces, border_crossings, overlap_area,
+uv_coverage). Raises UnwrapError (name ERROR_WRONG_PARAMETER) when a mesh does not fit one page at the
+density given.)doc";
+  m.def("unwrap_scene", &unwrap_scene, py::arg("meshes"), py::kw_only(), CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_KEYWORD)
+        py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("hide_seams") = py::none(),
+        py::arg("progress") = py::none(), py::arg("threads") = py::none(), scene_documentation.c_str());
 }

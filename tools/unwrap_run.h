@@ -46,6 +46,7 @@ struct Run_summary
   double time_seconds = 0.;
   double seam_visibility = std::nan(""); // with --hide-seams or --report-visibility
   double visibility_seconds = 0.;
+  nlohmann::ordered_json atlas;       // --atlas: the scene atlas (scene_atlas_run.h); null otherwise
 };
 
 // The statistics of one run (documented in the README); numbers that are
@@ -91,6 +92,7 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
                   {"v_steps", number(t.v_steps)}, {"cut_extraction", number(t.cut_extraction)},
                   {"final_solve", number(t.final_solve)}, {"packing", number(t.packing)},
                   {"total", number(t.total)}};
+  if(!s.atlas.is_null()) j["atlas"] = s.atlas;
   if(s.status != "ok") // nothing was measured: no figure rather than zeros
     for(auto& [key, value] : j.items())
       if(value.is_number() || value.is_boolean() || value.is_object())

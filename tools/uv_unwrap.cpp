@@ -10,6 +10,8 @@
 #include "mesh_input.h"
 #include "mesh_output.h"
 #include "output_formats.h"
+#include "scene_atlas_run.h"
+#include "uv_unwrap_scene.h"
 #include "seam_constraints.h"
 #include "gltf_split_normals.h"
 #include "split_normals.h"
@@ -43,6 +45,7 @@
 #include <functional>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -78,6 +81,7 @@ using uv_unwrap::Failure;
 using uv_unwrap::Options;
 using cut_tools::printable_text;
 using uv_unwrap::Run_summary;
+using uv_unwrap::Scene;
 using uv_unwrap::statistics_text;
 
 // ---------------------------------------------------------------- input
@@ -435,10 +439,11 @@ void repair_primitive(const std::string& name, const gltf_io::Triangles& t, Mesh
 // into its own atlas; the statistics add up the primitives (E_d weighted by
 // area, E_s from the summed seam length and area, as METHOD.md defines them).
 void run_gltf(const Options& options, const std::string& input, const output_formats::Output_format& format,
-              const std::string& output, Run_summary& summary)
+              const std::string& output, Run_summary& summary, Scene* scene)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  gltf_io::Document doc;
+  const auto doc_ptr = std::make_shared<gltf_io::Document>(); // shared with the scene's writer
+  gltf_io::Document& doc = *doc_ptr;
   std::vector<gltf_io::Primitive_ref> primitives;
   try
   {
@@ -461,7 +466,8 @@ void run_gltf(const Options& options, const std::string& input, const output_for
     try
     {
       // welded positions first; as the file has it if that is no manifold
-      gltf_io::Triangles t;
+      const auto t_ptr = std::make_shared<gltf_io::Triangles>();
+      gltf_io::Triangles& t = *t_ptr;
       std::vector<Point_3> points;
       std::vector<std::vector<std::size_t>> polygons;
       for(bool weld : {true, false})
@@ -479,8 +485,10 @@ void run_gltf(const Options& options, const std::string& input, const output_for
         if(!repeated && PMP::is_polygon_soup_a_polygon_mesh(polygons)) break;
         polygons.clear();
       }
-      Mesh mesh;
-      std::vector<std::array<halfedge_descriptor, 3>> corner_halfedges; // after a repair: each corner's UV
+      const auto mesh_ptr = std::make_shared<Mesh>();
+      Mesh& mesh = *mesh_ptr;
+      const auto corners_ptr = std::make_shared<std::vector<std::array<halfedge_descriptor, 3>>>();
+      std::vector<std::array<halfedge_descriptor, 3>>& corner_halfedges = *corners_ptr; // after a repair: each corner's UV
       if(polygons.empty()) // repaired as the input path repairs mesh files (t: the file's vertices)
         repair_primitive(name, t, mesh, corner_halfedges, summary.warnings);
       else
@@ -498,21 +506,30 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
 
       // the UV of each corner: face i of the mesh is triangle i of the primitive
-      std::vector<std::array<double, 2>> uvs(3 * t.faces.size());
-      if(corner_halfedges.empty())
-      {
-        for(face_descriptor f : faces(mesh))
-          for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-            for(int k = 0; k < 3; ++k)
-              if(std::size_t(target(h, mesh)) == t.faces[std::size_t(f)][std::size_t(k)])
-                uvs[3 * std::size_t(f) + std::size_t(k)] = {uvmap[h].x(), uvmap[h].y()};
-      }
+      // (with --atlas, once the scene is packed)
+      auto write_uvs = [doc_ptr, ref, t_ptr, mesh_ptr, corners_ptr, uvmap, uv_set = options.uv_set] {
+        const Mesh& m = *mesh_ptr;
+        const gltf_io::Triangles& tri = *t_ptr;
+        std::vector<std::array<double, 2>> uvs(3 * tri.faces.size());
+        if(corners_ptr->empty())
+        {
+          for(face_descriptor f : faces(m))
+            for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m), m))
+              for(int k = 0; k < 3; ++k)
+                if(std::size_t(target(h, m)) == tri.faces[std::size_t(f)][std::size_t(k)])
+                  uvs[3 * std::size_t(f) + std::size_t(k)] = {uvmap[h].x(), uvmap[h].y()};
+        }
+        else
+          for(std::size_t f = 0; f < corners_ptr->size(); ++f)
+            for(std::size_t k = 0; k < 3; ++k)
+              if(const halfedge_descriptor h = (*corners_ptr)[f][k]; h != Mesh::null_halfedge())
+                uvs[3 * f + k] = {uvmap[h].x(), uvmap[h].y()};
+        gltf_io::set_corner_uvs(*doc_ptr, ref, tri, uvs, uv_set);
+      };
+      if(scene)
+        scene->parts.push_back({scene->input, input + ", " + name, mesh_ptr, seams, uvmap, write_uvs});
       else
-        for(std::size_t f = 0; f < corner_halfedges.size(); ++f)
-          for(std::size_t k = 0; k < 3; ++k)
-            if(const halfedge_descriptor h = corner_halfedges[f][k]; h != Mesh::null_halfedge())
-              uvs[3 * f + k] = {uvmap[h].x(), uvmap[h].y()};
-      gltf_io::set_corner_uvs(doc, ref, t, uvs, options.uv_set);
+        write_uvs();
 
       const double a = PMP::area(mesh);
       const SMP::Cut_and_parameterize_result& r = part.result;
@@ -566,16 +583,20 @@ void run_gltf(const Options& options, const std::string& input, const output_for
     summary.warnings.push_back(w);
   }
   if(interrupted) throw Failure("interrupted", "ERROR_CANCELED");
-  try
-  {
-    output_formats::Written written{input, nullptr, nullptr, nullptr, summary.warnings, &doc};
-    format.write(output, written);
-  }
-  catch(const gltf_io::Gltf_error& e)
-  {
-    throw Failure(e.what(), "ERROR_CANNOT_WRITE");
-  }
-  summary.output = output;
+  auto write = [doc_ptr, input, &format, output](Run_summary& s) {
+    try
+    {
+      output_formats::Written written{input, nullptr, nullptr, nullptr, s.warnings, doc_ptr.get()};
+      format.write(output, written);
+    }
+    catch(const gltf_io::Gltf_error& e)
+    {
+      throw Failure(e.what(), "ERROR_CANNOT_WRITE");
+    }
+    s.output = output;
+  };
+  if(scene) { scene->writers.push_back({scene->input, write}); return; }
+  write(summary);
   if(!options.quiet)
     std::cout << "  " << primitives.size() << " primitives: charts " << total.number_of_charts << ", E_d "
               << total.distortion << ", E_s " << total.seam_length << ", flipped faces " << summary.flipped_faces
@@ -583,7 +604,7 @@ void run_gltf(const Options& options, const std::string& input, const output_for
               << "\n  wrote " << output << std::endl;
 }
 
-void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary)
+void run(const char* argv0, const Options& options, const std::string& input, Run_summary& summary, Scene* scene)
 {
   if(is_gltf(input))
   {
@@ -594,11 +615,13 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
     if(!format.needs_gltf_input)
       throw Failure("a glTF input gives a glTF output (" + output_formats::list(".", output_formats::Inputs::gltf) +
                     "), not " + std::string(format.name));
-    run_gltf(options, input, format, output_file(options, stem, format), summary);
+    run_gltf(options, input, format, output_file(options, stem, format), summary, scene);
     return;
   }
-  Mesh mesh;
-  mesh_input::Input_report report;
+  const auto mesh_ptr = std::make_shared<Mesh>();                       // shared with the scene's writer
+  const auto report_ptr = std::make_shared<mesh_input::Input_report>();
+  Mesh& mesh = *mesh_ptr;
+  mesh_input::Input_report& report = *report_ptr;
   std::string stem;
   if(!input.empty())
   {
@@ -632,6 +655,23 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
   const Mesh_source source{summary.input, &report};
   unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, &source);
+  if(options.uv_set > 0)
+  {
+    const std::string warning = std::string(format.name) + " has one set of texture coordinates: the UVs of --uv-set " +
+                                std::to_string(options.uv_set) + " are written as that set";
+    std::cerr << "uv_unwrap: warning: " << printable_text(warning) << std::endl;
+    summary.warnings.push_back(warning);
+  }
+  if(scene)
+  {
+    scene->parts.push_back({scene->input, summary.input, mesh_ptr, seams, uvmap, {}});
+    scene->writers.push_back({scene->input, [mesh_ptr, report_ptr, uvmap, &format, output](Run_summary& s) {
+      output_formats::Written written{s.input, report_ptr.get(), mesh_ptr.get(), &uvmap, s.warnings, nullptr};
+      format.write(output, written);
+      s.output = output;
+    }});
+    return;
+  }
 
   // Isolated vertices are written as plain `v` lines that no face uses (the
   // writer numbers every vertex), so indices and positions stay those of the
@@ -670,13 +710,13 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
 
 // Unwraps one input (empty: the default mesh); every failure ends up in
 // the summary's status and message.
-Run_summary unwrap_one(const char* argv0, const Options& options, const std::string& input)
+Run_summary unwrap_one(const char* argv0, const Options& options, const std::string& input, Scene* scene = nullptr)
 {
   Run_summary summary;
   summary.input = input;
   try
   {
-    run(argv0, options, input, summary);
+    run(argv0, options, input, summary, scene);
     if(interrupted) // during the writing: none of this input's files stays
     {
       std::error_code ignored;
@@ -702,7 +742,7 @@ Run_summary unwrap_one(const char* argv0, const Options& options, const std::str
     summary.status = "ERROR_INTERNAL";
     summary.error = e.what();
   }
-  if(!options.stats.empty())
+  if(!options.stats.empty() && !scene) // with --atlas: once the atlas is written
   {
     try
     {
@@ -769,6 +809,30 @@ int main(int argc, char** argv)
   if(inputs.empty()) inputs.push_back(std::string()); // the default mesh
   std::set<std::string> outputs;
   int failures = 0;
+  if(options.atlas)
+  {
+    for(const std::string& input : inputs)
+      if(inputs.size() > 1 && !outputs.insert(fs::path(input).stem().string()).second)
+      {
+        std::cerr << "uv_unwrap: error: two inputs named '" << printable_text(fs::path(input).stem().string())
+                  << "' would write the same output" << std::endl;
+        return EXIT_FAILURE;
+      }
+    try
+    {
+      failures = uv_unwrap::run_scene(
+        options, inputs, jsonl,
+        [&](const std::string& input, Scene* scene) { return unwrap_one(argv[0], options, input, scene); },
+        interrupted);
+    }
+    catch(const Failure& e)
+    {
+      std::cerr << "uv_unwrap: error: " << printable_text(e.what()) << std::endl;
+      ++failures;
+    }
+    if(interrupted) return exit_status_interrupted;
+    return std::min(failures, 100);
+  }
   for(const std::string& input : inputs)
   {
     Run_summary summary;

@@ -124,8 +124,16 @@ bool parse_arguments(int argc, char** argv, Options& options)
     ->type_name("FMT")->check(CLI::IsMember(format_names))->group(output);
   app.add_option("--uv-set", options.uv_set,
                  "glTF: write the UVs to TEXCOORD_<N>, e.g. 1 for a lightmap set\n"
-                 "beside the material's (default 0); the sets below N must exist")
+                 "beside the material's (default 0); the sets below N must exist.\n"
+                 "OBJ and PLY have one set: N > 0 writes it, with a warning")
     ->type_name("N")->check(CLI::Range(0, 7))->group(output);
+  app.add_flag("--atlas", options.atlas,
+               "one atlas for all the inputs: every mesh and every glTF\n"
+               "primitive unwrapped on its own, then all their charts packed\n"
+               "together at one texel density (--texels-per-unit, pages of\n"
+               "--atlas-size texels); each input written as without it, the\n"
+               "page of each mesh in its statistics; --svg draws every page")
+    ->group("Texture atlas");
   app.add_option("--stats", options.stats, "write statistics as JSON, one input only")->type_name("FILE")->group(output);
   app.add_option("--jsonl", options.jsonl, "write statistics as JSON Lines: one line per input\n"
                                            "('-': standard output)")
@@ -169,6 +177,18 @@ bool parse_arguments(int argc, char** argv, Options& options)
 
   bool no_box = false;
   app.add_flag("--no-box", no_box, "no bounding box at all (same as --box-stiffness 0)")->group("Texture atlas");
+  std::string atlas_size;
+  app.add_option("--atlas-size", atlas_size, "texels per side of a page of the atlas (same as --texture-size)")
+    ->type_name("N")
+    ->check(CLI::Validator(
+      [](std::string& text) {
+        double value = 0.;
+        const cut_options::Option_spec& spec = cut_options::option_table()[cut_options::option_index("texture_size")];
+        return cut_options::parse_cli_value(spec, text, value) ? std::string()
+                                                               : invalid(text, cut_options::expected_text(spec));
+      },
+      ""))
+    ->group("Texture atlas");
   bool fast = false;
   app.add_flag("--fast", fast, "for interactive use (same as --preset fast)")->group("Method");
 
@@ -221,6 +241,16 @@ bool parse_arguments(int argc, char** argv, Options& options)
     if(given[preset].value_or(1.) != 1.) throw Failure("--fast contradicts --preset (give one of them)");
     given[preset] = 1.; // the row's choice "fast"
   }
+  const std::size_t texture_size = cut_options::option_index("texture_size");
+  if(!atlas_size.empty())
+  {
+    const double size = std::stod(atlas_size); // checked by its validator
+    if(given[texture_size] && *given[texture_size] != size)
+      throw Failure("--atlas-size contradicts --texture-size (give one of them)");
+    given[texture_size] = size;
+  }
+  if(given[cut_options::option_index("texels_per_unit")] && !options.atlas)
+    throw Failure("--texels-per-unit is the density of a scene atlas: give --atlas too");
   // the options not given stay unset: the library's rules (the default box) decide
   cut_options::apply(given, options.method);
   const bool several = options.inputs.size() > 1 ||
@@ -232,7 +262,11 @@ bool parse_arguments(int argc, char** argv, Options& options)
     throw Failure("give -o/--output or --output-dir, not both");
   if(several && !options.stats.empty())
     throw Failure("--stats takes one input; give --jsonl for several");
-  if(several && !(options.svg.empty() && options.png.empty() && options.v_field.empty() && options.v_png.empty()))
+  if(options.atlas && !options.output.empty())
+    throw Failure("--atlas writes each input under its own name: give --output-dir, not -o");
+  if(options.atlas && !(options.png.empty() && options.v_field.empty() && options.v_png.empty()))
+    throw Failure("--png, --v-field and --v-png show one mesh: not with --atlas (--svg draws the atlas's pages)");
+  if(several && !options.atlas && !(options.svg.empty() && options.png.empty() && options.v_field.empty() && options.v_png.empty()))
     throw Failure("--svg, --png, --v-field and --v-png take one input");
   if(several && !(options.seams_file.empty() && options.forbid_file.empty() && options.save_seams_file.empty()))
     throw Failure("--seams, --forbid and --save-seams take one input (vertex indices are a mesh's own)");

@@ -30,7 +30,8 @@ struct Options
   std::string output_dir;     // empty: the current directory
   std::string output_format;  // a name of tools/output_formats.h; empty: the input's (obj for off and stl)
   std::string stats;          // one input only
-  int uv_set = 0;              // glTF: the UVs go to TEXCOORD_<uv_set>
+  int uv_set = 0;              // glTF: the UVs go to TEXCOORD_<uv_set>; OBJ, PLY: their one set, with a warning
+  bool atlas = false;          // every mesh of every input in one scene atlas (scene_atlas_run.h)
   std::string jsonl;          // one line of statistics per input ("-": stdout)
   std::string svg, png, v_field, v_png; // pictures, written by tools/preview
   Preview_camera camera;         // of the PNG; y up unless --up

@@ -63,3 +63,14 @@ def unwrap_function(preferred_program=""):
         raise RuntimeError((problem() or "uv_unwrap forced") + "; and no uv_unwrap program was found (give its "
                            "path in the add-on's preferences, or build the module for this Python)")
     return (lambda V, F, **options: uv_unwrap_cli.unwrap(path, V, F, **options)), "program " + path
+
+
+def unwrap_scene_function():
+    """The module's unwrap_scene() (one atlas for several meshes); RuntimeError where the module does not
+    load: the uv_unwrap program's fallback unwraps one mesh at a time. Call on the main thread."""
+    forced = os.environ.get("UV_UNWRAP_SEAMS_BACKEND", "") == "uv_unwrap"
+    m = None if forced else module()
+    if m is None or not hasattr(m, "unwrap_scene"):
+        raise RuntimeError("one atlas for all selected objects needs the Python module uv_unwrap (%s)"
+                           % (problem() or "the program backend is forced"))
+    return m.unwrap_scene

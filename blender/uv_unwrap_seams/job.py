@@ -11,8 +11,11 @@ from .mesh_arrays import MeshArrays
 
 
 class Job:
-    def __init__(self, objects, options, keep_seams=True, protect="sharp_edge", uv_map_name=None, program=""):
+    def __init__(self, objects, options, keep_seams=True, protect="sharp_edge", uv_map_name=None, program="",
+                 one_atlas=False):
         self.unwrap, self.backend = backend.unwrap_function(program)  # raises RuntimeError if there is none
+        # one atlas: every object's charts packed together at one texel density (unwrap_scene())
+        self.unwrap_scene = backend.unwrap_scene_function() if one_atlas else None
         self.objects = list(objects)
         self.options = dict(options)
         self.uv_map_name = uv_map_name
@@ -35,7 +38,13 @@ class Job:
         """Unwraps every object (blocking)."""
         start = time.perf_counter()
         try:
-            for i, a in enumerate(self.arrays):
+            if self.unwrap_scene is not None:
+                self.results = self.unwrap_scene([(a.V, a.F) for a in self.arrays],
+                                                 seams=[a.seams for a in self.arrays],
+                                                 forbidden=[a.forbidden for a in self.arrays],
+                                                 progress=self._progress, **self.options)
+                self.current = len(self.arrays) - 1
+            for i, a in enumerate(self.arrays if self.unwrap_scene is None else []):
                 self.current = i
                 self.results[i] = self.unwrap(a.V, a.F, seams=a.seams, forbidden=a.forbidden,
                                               progress=self._progress, **self.options)
@@ -73,7 +82,8 @@ class Job:
                 for w in r.warnings]
 
     def summary(self):
-        parts = ["%s: %d charts, E_d %.3f, E_s %.2f" % (o.name, r.stats["charts"], r.stats["distortion"],
-                                                       r.stats["seam_length"])
+        parts = ["%s: %d charts, E_d %.3f, E_s %.2f%s" % (o.name, r.stats["charts"], r.stats["distortion"],
+                                                         r.stats["seam_length"],
+                                                         ", page %d" % r.page if getattr(r, "page", -1) >= 0 else "")
                  for o, r in zip(self.objects, self.results)]
         return "; ".join(parts) + " (%.1f s)" % self.seconds

@@ -44,10 +44,15 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
     new_uv_map: BoolProperty(name="New UV map", default=False,
                              description="Write a new UV map instead of the active one")
     uv_map_name: StringProperty(name="UV map name", default="OptimizedSeams")
+    one_atlas: BoolProperty(name="One atlas for all selected objects", default=False,
+                            description="Pack the charts of every selected object into one shared atlas at one "
+                                        "texel density (a lightmap), instead of one atlas per object")
 
     # -- options
     def _options(self):
         options = option_table.keywords(self)
+        if not self.one_atlas:
+            options.pop("texels_per_unit", None)  # a scene atlas's density
         if self.hide_seams:
             options["hide_seams"] = self.hide_seams
         return options
@@ -57,7 +62,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         preferences = context.preferences.addons[__package__].preferences
         return Job(_mesh_objects(context), self._options(), keep_seams=self.keep_seams, protect=protect,
                    uv_map_name=self.uv_map_name if self.new_uv_map else None,
-                   program=bpy.path.abspath(preferences.uv_unwrap_program))
+                   program=bpy.path.abspath(preferences.uv_unwrap_program), one_atlas=self.one_atlas)
 
     def draw(self, context):
         layout = self.layout
@@ -68,6 +73,9 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         layout.prop(self, "hide_seams")
         layout.prop(self, "margin")
         layout.prop(self, "texture_size")
+        layout.prop(self, "one_atlas")
+        if self.one_atlas:
+            layout.prop(self, "texels_per_unit")
         layout.prop(self, "box")
         if self.box == 'TIGHT':
             layout.prop(self, "box_aspect")

@@ -152,7 +152,7 @@ def cli_arguments(options):
 
 def advanced_rows():
     """The rows drawn in the panel's Advanced section (the others have their own place)."""
-    main = {"seam_cost", "max_distortion", "margin", "texture_size", "box_aspect", "preset"}
+    main = {"seam_cost", "max_distortion", "margin", "texture_size", "box_aspect", "preset", "texels_per_unit"}
     return [row for row in ROWS if row["blender"] not in main]
 
 

@@ -94,6 +94,10 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "texture width and height in texels, the unit of the padding")                                                   \
   X(padding, REAL, "--padding", "padding", "margin", 0., false, unbounded, "", "Texture atlas",                     \
     "gap between charts and to the square's sides, in texels")                                                       \
+  X(texels_per_unit, REAL, "--texels-per-unit", "texels_per_unit", "texels_per_unit", 0., false, unbounded, "",     \
+    "Texture atlas",                                                                                                 \
+    "scene atlas only (--atlas, unwrap_scene()): texels per unit of 3D length, the same for every mesh, pages "     \
+    "added as needed; 0: the largest density at which all fit one page")                                            \
   X(world_units, FLAG, "--world-units", "world_units", "world_units", 0., false, 1., "", "Texture atlas",           \
     "keep UVs in 3D units (charts still packed) instead of [0,1]")                                                   \
   X(bounding_box_aspect_ratio, RATIO, "--box", "box", "box_aspect", 0., true, unbounded, "", "Texture atlas",       \

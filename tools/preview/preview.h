@@ -42,7 +42,11 @@ struct Preview_caption
   std::string name;
   double coverage = -1;            // UV area / texture square area, in [0,1]; negative: not shown
   long long border_crossings = -1; // crossing UV border segments (overlaps); negative: not shown
+  int pages = 0;                   // > 0: a scene atlas, page p's UVs moved by p * preview_page_offset in u
 };
+
+// The u offset between the pages of a scene atlas drawn side by side (a tenth of a page between them).
+constexpr double preview_page_offset = 1.1;
 
 // UV layout fitted to the page: faces filled by distortion (viridis-like ramp
 // on a log scale, with a legend), chart outlines, seams on top, a caption.

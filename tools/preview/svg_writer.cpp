@@ -130,6 +130,13 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
     box = Box2{{0, 0}, {1, 1}};
     du = dv = 1;
   }
+  // A scene atlas: every page, side by side, framed.
+  if(cap.pages > 0)
+  {
+    box = Box2{{0, 0}, {preview_page_offset * (cap.pages - 1) + 1, 1}};
+    du = box.hi[0];
+    dv = 1;
+  }
 
   // Page geometry (SVG user units ~ pixels).
   const double page_w = 1000, margin = 20, top_y = 92, area = 740;
@@ -219,6 +226,18 @@ bool write_uv_svg(const std::string& path, const Preview_mesh& mesh, const Previ
   {
     o += "<rect id=\"unit-square\" x=\"";
     put_num(o, X(0));
+    o += "\" y=\"";
+    put_num(o, Y(1));
+    o += "\" width=\"";
+    put_num(o, s);
+    o += "\" height=\"";
+    put_num(o, s);
+    o += "\" fill=\"none\" stroke=\"#808080\" stroke-width=\"1\" stroke-dasharray=\"6 4\"/>\n";
+  }
+  for(int page = 0; page < cap.pages; ++page)
+  {
+    o += "<rect id=\"page-" + std::to_string(page) + "\" x=\"";
+    put_num(o, X(preview_page_offset * page));
     o += "\" y=\"";
     put_num(o, Y(1));
     o += "\" width=\"";

@@ -28,7 +28,6 @@ EXEMPT = {
     "face_lambda_map": "a property map: the front ends fill it (face_weights, --lambda-from-ply-property, hide_seams)",
     "forbidden_seam_edge_map": "a property map: the front ends fill it (forbidden, --forbid, Blender's sharp edges)",
     "face_discontinuity_map": "an output property map (uv_unwrap --v-field, --v-png)",
-    "texels_per_unit": "pack_scene_atlas()'s texel density; no front end packs a scene atlas yet",
     "progress_callback": "a callback: each front end passes its own (progress=, stderr lines, Blender's status bar)",
     "number_of_rays": "face_visibility()'s, which the front ends run with its defaults (hide_seams)",
     "maximum_distance": "face_visibility()'s, which the front ends run with its defaults (hide_seams)",

@@ -70,6 +70,7 @@ struct Cut_parameterization_options
   bool global_injectivity = true;         ///< no chart overlaps itself or another
   int texture_size = 1024;                ///< texels per side of the texture (the padding's scale)
   double padding = 2.;                    ///< gap between charts, in texels
+  double texels_per_unit = 0.;            ///< pack_scene_atlas() only: texels per unit of 3D length, 0: the most that fit
   bool world_units = false;               ///< keep the 3D scale instead of filling the unit square
   std::optional<double> bounding_box_aspect_ratio;      ///< unset: 1, a square
   std::optional<double> bounding_box_stiffness;         ///< unset: see bounding_box_stiffness_value()
@@ -231,6 +232,7 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, internal_np::global_injectivity, o.global_injectivity);
   read_named_parameter(np, internal_np::texture_size, o.texture_size);
   read_named_parameter(np, internal_np::padding, o.padding);
+  read_named_parameter(np, internal_np::texels_per_unit, o.texels_per_unit);
   read_named_parameter(np, internal_np::world_units, o.world_units);
   read_named_parameter(np, internal_np::bounding_box_aspect_ratio, o.bounding_box_aspect_ratio);
   read_named_parameter(np, internal_np::bounding_box_stiffness, o.bounding_box_stiffness);
