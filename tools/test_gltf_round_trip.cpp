@@ -10,7 +10,8 @@
 // cannot run, and is skipped when the build turns it off
 // (-DCUT_PARAM_GLTF_VALIDATOR=OFF). Every output format that --help lists
 // (tools/output_formats.h) is written, by -o's extension and by --format, and
-// reads back with texture coordinates.
+// reads back with texture coordinates. With --hard-edge-angle, a
+// primitive's split NORMALs are seams (tools/gltf_split_normals.h).
 //   UV_UNWRAP=<uv_unwrap executable> test_gltf_round_trip
 #include "tests/gltf_test_files.h"
 
@@ -280,6 +281,74 @@ std::vector<std::string> listed_formats()
 // Every output format of uv_unwrap's table, chosen by -o's extension and by --format: each has a writer
 // and its extension is recognized; its file reads back with UVs. A format that needs a glTF input (the
 // mesh input is refused) is written from a glTF input.
+// A flat 4 x 4 grid in two halves of their own vertices, normals (0, 0, 1)
+// left of x = 2 and (0.28, 0, 0.96) right of it: the file splits its normals
+// along that line (the halves share positions there, welded on reading).
+tinygltf::Model split_normal_grid()
+{
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.buffers.emplace_back();
+  std::vector<float> pos, nrm;
+  std::vector<std::uint16_t> idx;
+  for(int half = 0; half < 2; ++half)
+  {
+    const auto first = std::uint16_t(pos.size() / 3);
+    for(int j = 0; j <= 4; ++j)
+      for(int i = 0; i <= 2; ++i)
+      {
+        pos.insert(pos.end(), {float(2 * half + i), float(j), 0.f});
+        nrm.insert(nrm.end(), {half ? 0.28f : 0.f, 0.f, half ? 0.96f : 1.f});
+      }
+    for(int j = 0; j < 4; ++j)
+      for(int i = 0; i < 2; ++i)
+      {
+        const auto a = std::uint16_t(first + j * 3 + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + 3),
+                   d = std::uint16_t(c + 1);
+        idx.insert(idx.end(), {a, b, d, a, d, c});
+      }
+  }
+  tinygltf::Primitive p;
+  p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                          TINYGLTF_TYPE_VEC3, pos.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.attributes["NORMAL"] = add_accessor(m, nrm.data(), nrm.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                        TINYGLTF_TYPE_VEC3, nrm.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                           TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  p.mode = TINYGLTF_MODE_TRIANGLES;
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(p);
+  m.meshes.push_back(mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  m.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  m.scenes.push_back(scene);
+  m.defaultScene = 0;
+  return m;
+}
+
+TEST(Gltf_split_normals, are_seams_with_hard_edge_angle_only)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  const fs::path dir = fs::temp_directory_path() / "cut_param_gltf_split_normals";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  tinygltf::Model m = split_normal_grid();
+  tinygltf::TinyGLTF writer;
+  ASSERT_TRUE(writer.WriteGltfSceneToFile(&m, (dir / "grid.gltf").string(), false, true, true, false));
+  // 180 degrees: no dihedral angle exceeds it (the grid is flat), the split normals alone cut
+  const Unwrap_run hard = run_uv_unwrap(uv_unwrap_program, dir / "grid.gltf", dir / "hard.gltf", "--hard-edge-angle 180");
+  ASSERT_TRUE(expect_valid_atlas(hard, "split normals"));
+  EXPECT_EQ(hard.stats["charts"], 2);
+  EXPECT_EQ(hard.stats["seam_edges"], 4); // the line x = 2
+  const Unwrap_run plain = run_uv_unwrap(uv_unwrap_program, dir / "grid.gltf", dir / "plain.gltf");
+  ASSERT_TRUE(expect_valid_atlas(plain, "without the option"));
+  EXPECT_EQ(plain.stats["charts"], 1); // welded: one flat disk
+  fs::remove_all(dir);
+}
+
 TEST(Output_formats, each_format_is_written_and_read_back)
 {
   ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";

@@ -4,11 +4,14 @@
 // refer to the input file also after a repair, PLY face and vertex
 // properties and colors become λ factors; uv_unwrap keeps forced seams
 // (--seams), never cuts forbidden edges (--forbid) and moves seams to where
-// a painted PLY property makes them cheap (--lambda-from-ply-property).
+// a painted PLY property makes them cheap (--lambda-from-ply-property);
+// the split normals of an OBJ (split_normals.h) are seams with
+// --hard-edge-angle, and only then.
 //
 //   UV_UNWRAP=<uv_unwrap executable> test_seam_constraints
 #include "mesh_input.h"
 #include "seam_constraints.h"
+#include "split_normals.h"
 
 #include <gtest/gtest.h>
 
@@ -323,6 +326,63 @@ TEST_F(Uv_unwrap_constraints, painted_property_moves_the_seams)
   EXPECT_GT(cheap, 4. * dear) << "with the property: " << cheap << " cheap, " << dear << " dear; without: "
                               << plain_cheap << ", " << plain_dear;
   EXPECT_LT(dear, plain_dear + 1e-12);
+}
+
+/// A flat 4 x 4 grid of quads in OBJ, whose left half's corners name the
+/// normal 1 and right half's the normal 2: its normals are split along the
+/// line x = 2 (4 edges), where the surface is flat.
+void write_split_normal_grid(const fs::path& file)
+{
+  std::ofstream out(file);
+  for(int j = 0; j <= 4; ++j)
+    for(int i = 0; i <= 4; ++i) out << "v " << i << ' ' << j << " 0\n";
+  out << "vn 0 0 1\nvn 0.28 0 0.96\n";
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i)
+    {
+      const int n = i < 2 ? 1 : 2, a = 1 + i + 5 * j;
+      out << "f " << a << "//" << n << ' ' << a + 1 << "//" << n << ' ' << a + 6 << "//" << n << ' ' << a + 5 << "//" << n
+          << '\n';
+    }
+}
+
+/// The 4 edges of the line x = 2 of that grid, as pairs of its vertex indices.
+std::set<std::pair<std::size_t, std::size_t>> split_line()
+{
+  std::set<std::pair<std::size_t, std::size_t>> line;
+  for(std::size_t j = 0; j < 4; ++j) line.insert({2 + 5 * j, 2 + 5 * (j + 1)});
+  return line;
+}
+
+TEST(Split_normals, the_edges_where_an_obj_splits_its_normals_are_flagged)
+{
+  const fs::path dir = fresh_directory("split_normals");
+  write_split_normal_grid(dir / "grid.obj");
+  Mesh mesh;
+  mesh_input::Input_report report;
+  mesh_input::read_input_mesh((dir / "grid.obj").string(), mesh, report);
+  ASSERT_EQ(num_faces(mesh), 32u); // the quads triangulated: their diagonals are no split
+  auto seams = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  auto forbidden = mesh.add_property_map<Mesh::Edge_index, bool>("e:forbidden", false).first;
+  std::string warning;
+  EXPECT_EQ(split_normals::flag_split_normal_edges((dir / "grid.obj").string(), mesh, report, seams, forbidden, warning),
+            4u);
+  EXPECT_TRUE(warning.empty());
+  EXPECT_EQ(undirected(seam_constraints::flagged_edges(mesh, report, seams)), split_line());
+}
+
+TEST(Split_normals, uv_unwrap_cuts_them_with_hard_edge_angle_only)
+{
+  const fs::path dir = fresh_directory("split_normals_run");
+  write_split_normal_grid(dir / "grid.obj");
+  const std::string input = (dir / "grid.obj").string(), hard = (dir / "hard.txt").string(),
+                    plain = (dir / "plain.txt").string();
+  // 180 degrees: no dihedral angle exceeds it, the split normals alone make the seams
+  ASSERT_EQ(run_uv_unwrap("\"" + input + "\" -o \"" + (dir / "a.obj").string() + "\" --hard-edge-angle 180 --save-seams \"" +
+                          hard + "\""), 0);
+  EXPECT_EQ(undirected(seam_constraints::read_selection_edges(hard)), split_line());
+  ASSERT_EQ(run_uv_unwrap("\"" + input + "\" -o \"" + (dir / "b.obj").string() + "\" --save-seams \"" + plain + "\""), 0);
+  EXPECT_TRUE(seam_constraints::read_selection_edges(plain).empty()); // a flat disk: no seam without the option
 }
 
 } // namespace

@@ -13,6 +13,8 @@
 #include "scene_atlas_run.h"
 #include "uv_unwrap_scene.h"
 #include "seam_constraints.h"
+#include "gltf_split_normals.h"
+#include "split_normals.h"
 #include "unwrap_run.h"
 #include "uv_unwrap_options.h"
 
@@ -331,7 +333,10 @@ template <typename SeamMap, typename ForbiddenMap, typename LambdaMap>
 void read_constraints(const Options& options, const Mesh& mesh, const Mesh_source* source, SeamMap seams,
                       ForbiddenMap forbidden, LambdaMap face_lambda)
 {
-  if(options.seams_file.empty() && options.forbid_file.empty() && options.lambda_property.empty()) return;
+  const bool split_normals = options.method.hard_edge_angle && source != nullptr && source->report != nullptr &&
+                             mesh_input::lower_extension(source->filename) == "obj"; // hard edges: the file's too
+  if(options.seams_file.empty() && options.forbid_file.empty() && options.lambda_property.empty() && !split_normals)
+    return;
   if(source == nullptr || source->report == nullptr)
     throw Failure("--seams, --forbid and --lambda-from-ply-property need a mesh file (OBJ, OFF, PLY or STL)");
   try
@@ -343,6 +348,12 @@ void read_constraints(const Options& options, const Mesh& mesh, const Mesh_sourc
     if(!options.forbid_file.empty())
       seam_constraints::flag_edges(mesh, report, seam_constraints::read_selection_edges(options.forbid_file),
                                    options.forbid_file, forbidden);
+    if(split_normals)
+    {
+      std::string warning;
+      split_normals::flag_split_normal_edges(source->filename, mesh, report, seams, forbidden, warning);
+      if(!warning.empty()) std::cerr << "uv_unwrap: warning: " << printable_text(warning) << std::endl;
+    }
     if(!options.lambda_property.empty())
     {
       const std::vector<double> factor =
@@ -485,6 +496,8 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       auto seams = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
       auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
       auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
+      if(options.method.hard_edge_angle && corner_halfedges.empty()) // hard edges: the split NORMALs too
+        split_normals::flag_gltf_split_normal_edges(doc, ref, t, mesh, seams);
       Run_summary part;
       part.input = name;
       if(!options.quiet)

@@ -21,9 +21,9 @@ def _load():
 ROWS = _load()
 BY_KEYWORD = {row["python"]: row for row in ROWS}
 
-# starting value of the distortion bound, which is off by default (the others
+# starting values of the distortion bound and the hard edge angle, off by default (the others
 # start at what the library uses when they are not given: "unset_value")
-_SUGGESTED = {"max_distortion": 4.2}
+_SUGGESTED = {"max_distortion": 4.2, "hard_edge_angle": 30.}
 _INT_MAX = 2 ** 31 - 1
 
 

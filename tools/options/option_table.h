@@ -85,6 +85,9 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
   X(weld_colocal_vertices, INVERTED_FLAG, "--no-weld", "no_weld", "no_weld", 0., false, 1., "", "Method",           \
     "keep vertices at the same position apart (each piece of a mesh exported with split normals its own chart) "  \
     "instead of unwrapping them as one vertex")                                                                     \
+  X(hard_edge_angle, REAL, "--hard-edge-angle", "hard_edge_angle", "hard_edge_angle", 0., false, 180., "",        \
+    "Method", "edges whose dihedral angle exceeds this many degrees are seams, and so are the edges where the "    \
+    "input's normals are split (OBJ vn, glTF NORMAL; 180: those only), as lightmaps need (default: none)")       \
   X(global_injectivity, INVERTED_FLAG, "--allow-overlaps", "allow_overlaps", "allow_overlaps", 0., false, 1., "",   \
     "Texture atlas", "let a chart overlap itself (no border barrier; charts still packed apart)")                    \
   X(texture_size, COUNT, "--texture-size", "texture_size", "texture_size", 1., false, 1e6, "", "Texture atlas",     \

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/colocal_vertices.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/user_maps.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/hard_edges.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
 
@@ -108,6 +109,18 @@ namespace Surface_mesh_parameterization {
 ///     \cgalParamExtra{an edge both in `seam_edge_map` and forbidden gives `ERROR_WRONG_PARAMETER`;
 ///       flags on border edges are ignored; `ERROR_FORBIDDEN_EDGES_BLOCK_CUT` when no cut opens
 ///       the mesh into disks without them (\ref Cut_parameterization_constraints)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{hard_edge_angle}
+///     \cgalParamDescription{every interior edge whose dihedral angle (between the normals of
+///       its two faces; 0 where the surface is flat) exceeds this many degrees is a seam from
+///       the start, kept like a given seam, as lightmaps need (no chart across a crease); the
+///       cut search still adds the cuts the distortion asks for. Forbidden edges are left
+///       uncut; faces of zero area make no hard edge; with `weld_colocal_vertices`, the angle
+///       is measured on the welded surface (\ref Cut_parameterization_hard_edges)}
+///     \cgalParamType{`double`, in [0, 180]}
+///     \cgalParamDefault{no hard edge}
+///     \cgalParamExtra{the edges cut this way are counted in
+///       `Cut_and_parameterize_result::number_of_hard_edges` (given seams apart)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distortion_bound}
 ///     \cgalParamDescription{the result's E_d must be at most this, with seams as short as the
@@ -360,6 +373,11 @@ cut_and_parameterize(const TriangleMesh& mesh, SeamEdgeMap seam_edge_map, Halfed
   for(std::size_t e = 0; e < surface.edges.size(); ++e) state.is_cut[e] = get(seam_edge_map, surface.edges[e]);
   if(!ic::read_forbidden_edges(surface, get_parameter(np, internal_np::forbidden_seam_edge_map), state))
     return finish(ERROR_WRONG_PARAMETER);
+  if(options.hard_edge_angle)
+  {
+    if(!(*options.hard_edge_angle >= 0. && *options.hard_edge_angle <= 180.)) return finish(ERROR_WRONG_PARAMETER);
+    result.number_of_hard_edges = ic::cut_hard_edges(surface, *options.hard_edge_angle, state.rules, state.is_cut);
+  }
   log.timings.initialization = ic::seconds_since(start); // the optimization adds the rest
 
   const Error_code status =

@@ -93,6 +93,8 @@ CGAL_SMP_CUT_NAMED_PARAMETER(reject_degenerate_faces_t, reject_degenerate_faces)
 /// true: vertices at the same position (within 1e-6 of the bounding box diagonal) are one vertex of the
 /// unwrapping (default true).
 CGAL_SMP_CUT_NAMED_PARAMETER(weld_colocal_vertices_t, weld_colocal_vertices)
+/// Interior edges whose dihedral angle exceeds this many degrees are seams (double in [0, 180]; default: none).
+CGAL_SMP_CUT_NAMED_PARAMETER(hard_edge_angle_t, hard_edge_angle)
 /// Above twice this many faces the cuts are decided on a simplified copy (int >= 0, default 10000; 0: never).
 CGAL_SMP_CUT_NAMED_PARAMETER(multiresolution_faces_t, multiresolution_faces)
 /// Inner solver of the distortion minimizations (`Inner_solver`, default `Inner_solver::NEWTON`).
@@ -127,6 +129,13 @@ CGAL_SMP_CUT_NAMED_PARAMETER(bounding_box_distortion_budget_t, bounding_box_dist
 CGAL_SMP_CUT_NAMED_PARAMETER(number_of_rays_t, number_of_rays)
 /// Visibility (face_visibility()): faces farther than this do not block (double > 0, default: no limit).
 CGAL_SMP_CUT_NAMED_PARAMETER(maximum_distance_t, maximum_distance)
+
+/// Scene atlas (pack_scene_atlas()): per mesh, the index of the mesh it is an instance of, which it shares
+/// texels with (std::vector<int>; -1: none).
+CGAL_SMP_CUT_NAMED_PARAMETER(instance_of_t, instance_of)
+/// Scene atlas (pack_scene_atlas()): given, meshes equal to an earlier one up to a rigid motion, within this
+/// distance relative to its bounding box diagonal, share its texels (double >= 0; default: no detection).
+CGAL_SMP_CUT_NAMED_PARAMETER(stacking_tolerance_t, stacking_tolerance)
 
 /// Metrics: UV length per 3D length of the map measured (e.g. `uv_scale` of a
 /// packed atlas); the UVs are divided by it (double, default 1).

@@ -65,6 +65,7 @@ struct Cut_parameterization_options
   Preset preset = Preset::DEFAULT;        ///< FAST: less work for interactive use (see `with_preset()`)
   bool reject_degenerate_faces = false;   ///< refuse degenerate faces instead of clamping them
   bool weld_colocal_vertices = false;     ///< vertices at one position are one vertex of the unwrapping
+  std::optional<double> hard_edge_angle;  ///< edges of a larger dihedral angle (degrees) are seams; unset: none
   // the atlas
   bool global_injectivity = true;         ///< no chart overlaps itself or another
   int texture_size = 1024;                ///< texels per side of the texture (the padding's scale)
@@ -176,7 +177,7 @@ void read_named_parameter(const NamedParameters& np, Tag tag, Field& field)
 ///       parameter of `cut_and_parameterize()`: `distortion_bound`, `epsilon_start`,
 ///       `epsilon_end`, `iterations_per_epsilon`, `gamma`, `number_of_passes`,
 ///       `minimum_relative_cut_length`, `number_of_iterations`, `multiresolution_faces`,
-///       `inner_solver`, `preset`, `reject_degenerate_faces`, `weld_colocal_vertices`, `global_injectivity`,
+///       `inner_solver`, `preset`, `reject_degenerate_faces`, `weld_colocal_vertices`, `hard_edge_angle`, `global_injectivity`,
 ///       `texture_size`,
 ///       `padding`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
 ///       `bounding_box_distortion_budget`, `progress_callback` (their types and ranges are in
@@ -227,6 +228,7 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, internal_np::preset, o.preset);
   read_named_parameter(np, internal_np::reject_degenerate_faces, o.reject_degenerate_faces);
   read_named_parameter(np, internal_np::weld_colocal_vertices, o.weld_colocal_vertices);
+  read_named_parameter(np, internal_np::hard_edge_angle, o.hard_edge_angle);
   read_named_parameter(np, internal_np::global_injectivity, o.global_injectivity);
   read_named_parameter(np, internal_np::texture_size, o.texture_size);
   read_named_parameter(np, internal_np::padding, o.padding);

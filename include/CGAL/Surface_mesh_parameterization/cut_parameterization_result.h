@@ -69,6 +69,7 @@ struct Cut_and_parameterize_result
   std::size_t number_of_degenerate_faces = 0; ///< faces whose rest shape was clamped (zero area, needles)
   std::size_t number_of_isolated_vertices = 0; ///< vertices in no face: ignored, they have no UV
   std::size_t number_of_welded_vertices = 0;   ///< vertices merged into a colocal one (`weld_colocal_vertices`)
+  std::size_t number_of_hard_edges = 0;        ///< edges cut as hard edges (`hard_edge_angle`), given seams apart
   double initial_distortion = 0.;      ///< E_d of the initial (Tutte) map
   double distortion = 0.;              ///< E_d of the result
   double seam_length = 0.;             ///< E_s of the result (initial cut included)

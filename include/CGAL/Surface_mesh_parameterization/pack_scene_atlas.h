@@ -3,7 +3,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/scene_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/stacked_meshes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
@@ -13,6 +15,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -48,6 +51,9 @@ struct Scene_atlas_result
   int number_of_pages = 0;     ///< pages used
   double texels_per_unit = 0.; ///< texels per unit of 3D length, the same for every mesh
   std::vector<int> page;       ///< page of each mesh, in the order given
+  /// per mesh, the mesh whose texels it shares (`instance_of`, `stacking_tolerance`); itself if none
+  std::vector<int> stacked_on;
+  std::size_t number_of_charts = 0; ///< charts packed (those of the stacked copies not counted)
 };
 
 namespace internal {
@@ -105,8 +111,82 @@ bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const H
   return true;
 }
 
+/// Writes into the copy `to` (a scene mesh stacked on `from`, of the same
+/// connectivity, so that face f, corner k and edge e are the same in both
+/// indexings) the UVs and seam flags of `from`.
+template <typename Surface, typename SceneAtlasMesh>
+void copy_stacked_outputs(const Surface& from_surface, const SceneAtlasMesh& from, const Surface& to_surface,
+                          const SceneAtlasMesh& to)
+{
+  for(std::size_t fe = 0; fe < 3 * to_surface.number_of_faces(); ++fe)
+  {
+    const auto uv = get(from.uvmap, from_surface.corner_halfedge[fe / 3][fe % 3]);
+    put(to.uvmap, to_surface.corner_halfedge[fe / 3][fe % 3], uv);
+    if(to_surface.twin[fe] < 0) put(to.uvmap, opposite(to_surface.face_edge_halfedge(int(fe)), *to.mesh), uv);
+  }
+  for(std::size_t e = 0; e < to_surface.edges.size(); ++e)
+    put(to.seam_edge_map, to_surface.edges[e], bool(get(from.seam_edge_map, from_surface.edges[e])));
+}
+
 } // namespace cut
 } // namespace internal
+
+/// \ingroup PkgCutParameterizationRef
+///
+/// Finds the meshes of a scene that are copies of an earlier one (stacked
+/// parts): the same faces over the same vertex numbering (the order of
+/// `vertices(mesh)` and `faces(mesh)`, vertices in no face left out), and
+/// vertices that a rotation and a translation (the least-squares fit,
+/// Kabsch; no reflection) move onto the original's within
+/// `stacking_tolerance` times the original's bounding box diagonal. A caller
+/// may unwrap only the originals, then give `stacked_on` to
+/// `pack_scene_atlas()` as its `instance_of`: every copy gets its original's
+/// UVs and seams.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` made of triangles
+/// \param meshes the meshes (not owned)
+/// \param stacked_on output: per mesh, the index of the first earlier mesh it is a copy of, itself if none
+///   (an original is never a copy)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{stacking_tolerance}
+///     \cgalParamDescription{the largest distance between a vertex of the original and its
+///       counterpart of the copy moved onto it, relative to the original's bounding box diagonal}
+///     \cgalParamType{`double`, ≥ 0 and finite}
+///     \cgalParamDefault{`1e-4`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return `OK`, `ERROR_EMPTY_MESH` (no mesh, a null pointer or a mesh without face),
+///   `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE`, `ERROR_NON_MANIFOLD`,
+///   `ERROR_WRONG_PARAMETER` (the tolerance out of range)
+/// \pre none (the meshes are checked)
+/// \post on success, `stacked_on[m] <= m` and `stacked_on[stacked_on[m]] == stacked_on[m]`;
+///   on error, `stacked_on` is left unchanged
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code find_stacked_meshes(const std::vector<const TriangleMesh*>& meshes, std::vector<int>& stacked_on,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ic = internal::cut;
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::stacking_tolerance), 1e-4);
+  if(!(tolerance >= 0.) || !std::isfinite(tolerance)) return ERROR_WRONG_PARAMETER;
+  if(meshes.empty()) return ERROR_EMPTY_MESH;
+  std::vector<ic::Indexed_surface<TriangleMesh>> surfaces(meshes.size());
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    if(meshes[m] == nullptr) return ERROR_EMPTY_MESH;
+    const Error_code indexing = ic::to_error_code(
+      ic::index_surface(*meshes[m], ic::vertex_points(*meshes[m], CGAL::parameters::default_values()), surfaces[m]));
+    if(indexing != OK) return indexing;
+  }
+  std::vector<int> found;
+  if(!ic::stacked_originals(surfaces, {}, tolerance, found)) return ERROR_WRONG_PARAMETER;
+  stacked_on.swap(found);
+  return OK;
+}
 
 /// \ingroup PkgCutParameterizationRef
 ///
@@ -118,6 +198,14 @@ bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const H
 /// texels per unit of 3D length. Charts are packed by their shape (their
 /// rasters at the page's resolution, turned by multiples of 90°). All the
 /// charts of a mesh go to one page.
+///
+/// Stacked parts: a mesh that is an instance of another (`instance_of`) or
+/// found to be a copy of an earlier one (`stacking_tolerance`, see
+/// `find_stacked_meshes()`) is not packed: it gets the UVs and seams of its
+/// original, corner by corner, so that the copies share the original's
+/// texels (the packed area is that of the originals; its own UVs and seams
+/// are not read). A mirror image is never found to be a copy: a texture would
+/// appear mirrored on it (and a normal map's tangent frame would flip).
 ///
 /// \tparam SceneAtlasMesh `Scene_atlas_mesh<TriangleMesh, SeamEdgeMap, HalfedgeUVMap>`
 ///   (`make_scene_atlas_mesh()`), with `SeamEdgeMap` a `ReadablePropertyMap` from edges to
@@ -145,22 +233,44 @@ bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const H
 ///     \cgalParamType{`double`, ≥ 0 and finite}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{instance_of}
+///     \cgalParamDescription{per mesh, the index of the mesh it is an instance of (the same
+///       faces over the same vertex numbering, e.g. two nodes of a glTF scene that use one mesh),
+///       whose texels it shares whatever its vertices' positions; -1 (or its own index): none.
+///       Chains are followed to their first mesh}
+///     \cgalParamType{`std::vector<int>`, empty or of the size of `meshes`}
+///     \cgalParamDefault{no instance}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stacking_tolerance}
+///     \cgalParamDescription{given, every mesh that is not an instance is compared with the
+///       earlier originals: one of the same connectivity whose vertices a rotation and a
+///       translation move onto its own within this distance, relative to its bounding box
+///       diagonal, is stacked on it (`find_stacked_meshes()`)}
+///     \cgalParamType{`double`, ≥ 0 and finite (e.g. `1e-4`)}
+///     \cgalParamDefault{no detection}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \return `error` `OK`, or `ERROR_EMPTY_MESH` (no mesh or a mesh without
 ///   face), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATE`,
 ///   `ERROR_NON_MANIFOLD`, `ERROR_WRONG_PARAMETER` (a parameter out of range,
-///   a UV that is not finite or a mesh of zero UV area, or the charts of a mesh
-///   that do not fit one page at the given density)
+///   a UV that is not finite or a mesh of zero UV area, the charts of a mesh
+///   that do not fit one page at the given density, or an `instance_of` of the
+///   wrong size, with an index out of range, a cycle, or an instance whose
+///   connectivity differs from its original's)
 ///
-/// \pre every mesh is a model of `FaceGraph` made of triangles, and its UV map
+/// \pre every mesh is a model of `FaceGraph` made of triangles, and the UV map
+///   of every mesh that is not stacked on another
 ///   holds one UV map of it whose charts are the connected components of its
 ///   faces cut along the seams (as `cut_and_parameterize()` leaves them)
+/// \pre with stacked copies, `SeamEdgeMap` is also a `WritablePropertyMap` (the
+///   copies' seams are written)
 /// \post on error, every UV map is left unchanged
 /// \post on success: every UV lies in [0,1]²; the charts of the meshes of one
 ///   page are at least `padding` texels apart (never touching); each chart
 ///   is moved by a similarity (no mirror), all at `texels_per_unit`; the result
-///   depends on the input only
+///   depends on the input only; every stacked copy has, at each corner and
+///   edge, the UV and seam flag of its original's, and its original's page
 template <typename SceneAtlasMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
                                     const NamedParameters& np = CGAL::parameters::default_values())
@@ -178,6 +288,11 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
      !std::isfinite(texels_per_unit))
   { result.error = ERROR_WRONG_PARAMETER; return result; }
   if(meshes.empty()) { result.error = ERROR_EMPTY_MESH; return result; }
+  std::optional<double> stacking_tolerance;
+  ic::read_named_parameter(np, internal_np::stacking_tolerance, stacking_tolerance);
+  if(stacking_tolerance && (!(*stacking_tolerance >= 0.) || !std::isfinite(*stacking_tolerance)))
+  { result.error = ERROR_WRONG_PARAMETER; return result; }
+  const std::vector<int> instance_of = choose_parameter(get_parameter(np, internal_np::instance_of), std::vector<int>());
 
   std::vector<Surface> surfaces(meshes.size());
   std::vector<std::vector<int>> face_chart(meshes.size());
@@ -188,6 +303,13 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
     const Error_code indexing = ic::to_error_code(
       ic::index_surface(mesh, ic::vertex_points(mesh, CGAL::parameters::default_values()), surfaces[m]));
     if(indexing != OK) { result.error = indexing; return result; }
+  }
+  std::vector<int> original; // per mesh, the mesh whose texels it shares
+  if(!ic::stacked_originals(surfaces, instance_of, stacking_tolerance, original))
+  { result.error = ERROR_WRONG_PARAMETER; return result; }
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    if(original[m] != int(m)) continue; // a copy: its charts are its original's
     if(!ic::read_scene_charts(surfaces[m], meshes[m].seam_edge_map, meshes[m].uvmap, int(m), charts, face_chart[m]))
     { result.error = ERROR_WRONG_PARAMETER; return result; }
   }
@@ -197,6 +319,7 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
 
   for(std::size_t m = 0; m < meshes.size(); ++m)
   {
+    if(original[m] != int(m)) continue; // written from its original below
     const Surface& s = surfaces[m];
     using Point_2 = typename boost::property_traits<decltype(meshes[m].uvmap)>::value_type;
     std::vector<std::size_t> next(charts.size(), 0); // next triangle of each chart, in face order
@@ -217,9 +340,18 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
       if(s.twin[fe] < 0) put(meshes[m].uvmap, opposite(s.face_edge_halfedge(int(fe)), *meshes[m].mesh), uv[fe]);
     }
   }
+  for(std::size_t m = 0; m < meshes.size(); ++m)
+    if(original[m] != int(m))
+    {
+      ic::copy_stacked_outputs(surfaces[std::size_t(original[m])], meshes[std::size_t(original[m])], surfaces[m],
+                               meshes[m]);
+      layout.page_of_mesh[m] = layout.page_of_mesh[std::size_t(original[m])];
+    }
   result.number_of_pages = layout.pages;
   result.texels_per_unit = layout.texels_per_unit;
   result.page = layout.page_of_mesh;
+  result.stacked_on = original;
+  result.number_of_charts = charts.size();
   return result;
 }
 
