@@ -67,6 +67,7 @@ struct Pins
 {
   Coarse_mesh::Property_map<Vertex, char> on_border, on_seam;
   Coarse_mesh::Property_map<Edge, bool> constrained, seam, forbidden;
+  bool no_ears = false; // set where the collapses are recorded
 
   bool pinned(Vertex v) const { return on_border[v] || on_seam[v]; }
 
@@ -79,7 +80,10 @@ struct Pins
     if(is_border(edge(profile.v0_v1(), mesh), mesh)) // along the border: only seams pin
     {
       if(on_seam[v0] && on_seam[v1]) return -1;
-      return on_seam[v1] ? 1 : 0;
+      const int k = on_seam[v1] ? 1 : 0;
+      // a recorded collapse never removes an ear (its restored face would have no neighbour to take corners from)
+      if(no_ears && CGAL::degree(k == 0 ? v1 : v0, mesh) <= 2) return -1;
+      return k;
     }
     if(pinned(v0) && pinned(v1)) return -1;
     return pinned(v1) ? 1 : 0;
@@ -174,6 +178,7 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   Origin_visitor visitor;
   visitor.pins = &pins;
   if(record) visitor.collapses = &coarse.collapses;
+  pins.no_ears = record;
   visitor.origin = mesh.add_property_map<Vertex, int>("v:cut_origin", -1).first;
   for(std::size_t v = 0; v < vertex.size(); ++v) visitor.origin[vertex[v]] = int(v);
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)

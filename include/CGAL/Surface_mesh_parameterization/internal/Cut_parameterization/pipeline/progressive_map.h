@@ -268,6 +268,7 @@ bool undo_collapses(const Surface& surface, const Coarse_surface& coarse, const 
     for(const auto& s : c->star)
     {
       const int ub = uv_at(s[2]), ua = uv_at(s[0]);
+      if(ua < 0 || ub < 0) return false;
       sides.emplace_back(position[std::size_t(ub)], position[std::size_t(ua)]);
     }
     ring.clear();
