@@ -91,14 +91,12 @@ TEST(Multiresolution, discontinuity_field_is_carried_to_the_input)
   EXPECT_TRUE(mean_along_seams < mean - 1e-3) << "mean v " << mean << ", along the seams " << mean_along_seams;
 }
 
-// Below twice the copy's size (and below two levels' size,
-// tuning::two_level_min_faces), nothing changes: the result is the
+// Below twice the copy's size, nothing changes: the result is the
 // full-resolution run's, bit for bit.
 TEST(Multiresolution, small_meshes_are_not_simplified)
 {
   using Mesh = Surface_mesh;
-  const Mesh mesh = make_mesh<Mesh>(torus_soup(60, 32));
-  ASSERT_LE(num_faces(mesh), ic::tuning::two_level_min_faces);
+  const Mesh mesh = make_mesh<Mesh>(test_torus());
   Cut_run<Mesh> a(mesh), b(mesh);
   ASSERT_TRUE(a.run(SMP::parameters::multiresolution_faces(int(num_faces(mesh)) / 2)).ok());
   ASSERT_TRUE(b.run(SMP::parameters::multiresolution_faces(0)).ok());

@@ -221,7 +221,7 @@ constexpr double lambda_candidate_length_ratio = 1.5;
 /// the multiresolution copy's λ is scaled by (mean edge ratio)^this
 constexpr double coarse_lambda_exponent = 0.25;
 
-// -- two levels (pipeline/two_levels.h, pipeline/progressive_map.h)
+// -- two levels (pipeline/two_levels.h, pipeline/progressive_map.h; not called by the plan: measured worse)
 /// above this many faces (and up to the coarse copy's 2 x multiresolution_faces) the alternation's upper
 /// ε levels run on a simplified copy: below, the copy would decide little that the input does not redo
 constexpr std::size_t two_level_min_faces = 4000;

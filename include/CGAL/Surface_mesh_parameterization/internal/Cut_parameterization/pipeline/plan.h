@@ -23,7 +23,6 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progress.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/two_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_straightening.h>
@@ -98,16 +97,6 @@ template <typename Surface>
 bool cuts_on_coarse_copy(const Surface& surface, const Cut_parameterization_options& o)
 {
   return o.number_of_passes > 0 && is_large(surface.number_of_faces(), o);
-}
-
-/// True if the alternation runs on two levels (pipeline/two_levels.h): a
-/// mesh above tuning::two_level_min_faces faces whose cuts are decided on
-/// itself, from its initial cut (not from a first u-step done for a search).
-template <typename Surface>
-bool cuts_on_two_levels(const Surface& surface, const Cut_parameterization_options& o, const Map_state& state)
-{
-  return o.number_of_passes > 0 && o.multiresolution_faces > 0 && !state.first_u_step_done
-         && surface.number_of_faces() > tuning::two_level_min_faces && !cuts_on_coarse_copy(surface, o);
 }
 
 /// Greedy splits of `state` (solved, `state.distortion` its E_d) from
@@ -273,9 +262,8 @@ Error_code final_solve_rerouted(const Surface& surface, const Final_solve_args& 
 
 /// The method from `state.is_cut` (seams given by the user) up to the
 /// solved cut mesh under `run`: where to cut (on a simplified copy for large
-/// meshes, on two levels above tuning::two_level_min_faces), the final
-/// solve (the alternation's seams rerouted beside it where it ran on this
-/// mesh, up to two states at once), the greedy splits;
+/// meshes), the final solve (the alternation's seams rerouted beside it
+/// where it ran on this mesh, up to two states at once), the greedy splits;
 /// `state.distortion` is its E_d. The charts are not packed yet.
 template <typename Surface>
 Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& input_face_lambda,
@@ -287,9 +275,7 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   Error_code status = OK;
   const bool coarse = cuts_on_coarse_copy(surface, o)
                       && decide_cuts_on_coarse_copy(surface, face_lambda, o, progress, run, state, log, status);
-  const bool two_levels = !coarse && cuts_on_two_levels(surface, o, state)
-                          && decide_cuts_on_two_levels(surface, face_lambda, run.lambda, o, progress, state, log, status);
-  if(!coarse && !two_levels) status = decide_cuts(surface, face_lambda, run.lambda, o, progress, state, log);
+  if(!coarse) status = decide_cuts(surface, face_lambda, run.lambda, o, progress, state, log);
   if(status != OK) return status;
 
   Scoped_timer final_timer(log.timings.final_solve);
