@@ -229,6 +229,23 @@ constexpr double lambda_candidate_length_ratio = 1.5;
 /// the multiresolution copy's λ is scaled by (mean edge ratio)^this
 constexpr double coarse_lambda_exponent = 0.25;
 
+// -- two levels (pipeline/two_levels.h, pipeline/progressive_map.h; not called by the plan: measured worse)
+/// above this many faces (and up to the coarse copy's 2 x multiresolution_faces) the alternation's upper
+/// ε levels run on a simplified copy: below, the copy would decide little that the input does not redo
+constexpr std::size_t two_level_min_faces = 4000;
+/// the copy keeps this fraction of the faces ...
+constexpr double two_level_face_ratio = 0.25;
+/// ... and at least this many
+constexpr std::size_t two_level_min_coarse_faces = 2000;
+/// ε levels (the last ones) the input runs from the carried map and v
+constexpr int two_level_fine_levels = 1;
+/// a restored vertex is placed this far inside its fan's kernel (height over each side / its length)
+constexpr double progressive_kernel_margin = 0.05;
+/// ... halved at most this many times where the kernel is narrower (then the face would be flat)
+constexpr int progressive_margin_halvings = 40;
+/// an open fan (on the border) unfolds over at most this fraction of a turn
+constexpr double progressive_open_fan_angle = 0.95;
+
 // -- shape packing (atlas/shape_packing.h)
 /// a chart's raster holds every texel its triangles come within this many texels of (rounding)
 constexpr double raster_margin_texels = 1e-3;

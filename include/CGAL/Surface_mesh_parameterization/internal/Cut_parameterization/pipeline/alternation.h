@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/solver/tutte_embedding.h>
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -49,14 +50,32 @@ inline Error_code u_step(const Cut_parameterization_options& o, int alternation,
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
 
-/// One pass at seam cost `lambda`: the alternation at decreasing ε, then the
-/// cut paths from v. If `state.first_u_step_done`, its first u-step is the
-/// one already done (prepare_first_u_step()). Returns OK,
-/// ERROR_CANNOT_SOLVE_LINEAR_SYSTEM or ERROR_CANCELED.
+/// The ε levels of a pass that run: from level `first` (0: ε = epsilon_start;
+/// above 0 the pass starts from the map and v a coarser level carried) to
+/// before level `end`.
+struct Eps_levels
+{
+  int first = 0;
+  int end = std::numeric_limits<int>::max();
+};
+
+/// The number of ε levels of a pass (ε halved from epsilon_start while above epsilon_end).
+inline int number_of_eps_levels(const Cut_parameterization_options& o)
+{
+  int levels = 0;
+  for(double eps = o.epsilon_start; eps > o.epsilon_end; eps *= 0.5) ++levels;
+  return levels;
+}
+
+/// The alternation of one pass at seam cost `lambda` over the ε levels
+/// `levels`, leaving the map and v in `state`. If `state.first_u_step_done`,
+/// its first u-step is the one already done (prepare_first_u_step()).
+/// Returns OK, ERROR_CANNOT_SOLVE_LINEAR_SYSTEM or ERROR_CANCELED.
+/// Precondition: `state.v` has a value per face if `levels.first > 0`.
 template <typename Surface>
-Error_code alternate(const Surface& surface, const std::vector<double>& face_lambda, double lambda,
-                     const Cut_parameterization_options& o, const Progress& progress, int pass, Map_state& state,
-                     Work_log& log, std::vector<Cut_path>& paths)
+Error_code alternate_levels(const Surface& surface, const std::vector<double>& face_lambda, double lambda,
+                            const Cut_parameterization_options& o, const Progress& progress, int pass,
+                            const Eps_levels& levels, Map_state& state, Work_log& log)
 {
   const std::size_t nf = surface.number_of_faces();
   const double mean_edge = mean_edge_length(surface);
@@ -65,13 +84,13 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   u_setup.stop();
   Scoped_timer v_setup(log.timings.v_steps);
   Discontinuity_solver v_solver(dual_edges(surface, state.is_cut, face_lambda), state.chart.area, face_lambda);
-  state.v = Eigen::VectorXd::Ones(nf);
+  if(levels.first == 0) state.v = Eigen::VectorXd::Ones(nf);
   v_setup.stop();
   const bool first_done = state.first_u_step_done;
   state.first_u_step_done = false;
-  int alternation = 0;
-  for(double eps = o.epsilon_start; eps > o.epsilon_end; eps *= 0.5)
-    for(int i = 0; i < o.iterations_per_epsilon; ++i)
+  int alternation = 0, level = 0;
+  for(double eps = o.epsilon_start; eps > o.epsilon_end && level < levels.end; eps *= 0.5, ++level)
+    for(int i = 0; i < o.iterations_per_epsilon && level >= levels.first; ++i)
     {
       if(!(alternation == 0 && first_done))
       {
@@ -88,6 +107,18 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
         return ERROR_CANCELED;
     }
   log.v_step_factorizations += v_solver.factorizations(); // the v-steps the conjugate gradient left to Cholesky
+  return OK;
+}
+
+/// One pass at seam cost `lambda`: the alternation over `levels`
+/// (alternate_levels()), then the cut paths from v.
+template <typename Surface>
+Error_code alternate(const Surface& surface, const std::vector<double>& face_lambda, double lambda,
+                     const Cut_parameterization_options& o, const Progress& progress, int pass, Map_state& state,
+                     Work_log& log, std::vector<Cut_path>& paths, const Eps_levels& levels = Eps_levels())
+{
+  const Error_code status = alternate_levels(surface, face_lambda, lambda, o, progress, pass, levels, state, log);
+  if(status != OK) return status;
   Scoped_timer extraction(log.timings.cut_extraction);
   paths = extract_cut_paths(surface, state.is_cut, state.rules, state.v, o.minimum_relative_cut_length);
   return OK;
@@ -126,15 +157,17 @@ Error_code start_cut_mesh(const Surface& surface, const Cut_parameterization_opt
 }
 
 /// Where to cut at seam cost `lambda`: from `state.is_cut` (seams given by
-/// the user), the initial cut and map (unless `state.first_u_step_done`),
-/// then the passes of the alternation, each cutting along the paths of v.
+/// the user), the initial cut and map (unless `state.first_u_step_done`, or
+/// `first_pass.first > 0`: the initial cut mesh with the map and v carried
+/// from a coarser level), then the passes of the alternation, each cutting
+/// along the paths of v, the first over `first_pass`'s ε levels.
 /// Leaves the cut mesh and its map (not yet solved) in `state`.
 template <typename Surface>
 Error_code decide_cuts(const Surface& surface, const std::vector<double>& face_lambda, double lambda,
                        const Cut_parameterization_options& o, const Progress& progress, Map_state& state,
-                       Work_log& log)
+                       Work_log& log, const Eps_levels& first_pass = Eps_levels())
 {
-  if(!state.first_u_step_done)
+  if(!state.first_u_step_done && first_pass.first == 0)
   {
     const Error_code initial = start_cut_mesh(surface, o, progress, state, log);
     if(initial != OK) return initial;
@@ -142,7 +175,8 @@ Error_code decide_cuts(const Surface& surface, const std::vector<double>& face_l
   for(int pass = 0; pass < o.number_of_passes; ++pass)
   {
     std::vector<Cut_path> paths;
-    const Error_code status = alternate(surface, face_lambda, lambda, o, progress, pass, state, log, paths);
+    const Error_code status = alternate(surface, face_lambda, lambda, o, progress, pass, state, log, paths,
+                                        pass == 0 ? first_pass : Eps_levels());
     if(status != OK) return status;
     if(paths.empty()) break;
     Scoped_timer extraction(log.timings.cut_extraction);

@@ -1,0 +1,102 @@
+// Two levels: where to cut on a mesh of a few thousand faces, the
+// alternation's upper ε levels on a simplified copy (a quarter of the
+// faces), cut where the input's initial cut is; the copy's map carried to
+// the input by undoing the simplification (pipeline/progressive_map.h), v
+// carried per face; then the last ε level and the cut extraction on the
+// input, so that the seams come from the input's own field v.
+#ifndef CGAL_SMP_CUT_INTERNAL_TWO_LEVELS_H
+#define CGAL_SMP_CUT_INTERNAL_TWO_LEVELS_H
+
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
+#include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/alternation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progressive_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/Scoped_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace cut {
+
+/// The faces of the two-level copy of a mesh of `faces` faces.
+inline std::size_t two_level_coarse_faces(std::size_t faces)
+{
+  return (std::max)(tuning::two_level_min_coarse_faces, std::size_t(double(faces) * tuning::two_level_face_ratio));
+}
+
+/// The map of the initial cut mesh in `state` carried from the copy's
+/// (`coarse_state` on `coarse`) by undo_collapses(); false, `state`
+/// untouched, unless it is valid on every chart (the alternation's levels
+/// are common to all charts: a chart from its Tutte map would get the last
+/// level only).
+template <typename Surface>
+bool carry_coarse_map(const Surface& surface, const Coarse_surface& coarse, const Map_state& coarse_state,
+                      Map_state& state)
+{
+  Carried_map carried;
+  if(!undo_collapses(surface, coarse, coarse_state.chart, coarse_state.x, state.chart, carried)) return false;
+  for(char valid : carried.valid)
+    if(!valid) return false;
+  state.x = std::move(carried.x);
+  return true;
+}
+
+/// Where to cut on two levels (see above) at seam cost `lambda`, from
+/// `state.is_cut` (the user's seams): the input's initial cut, a copy of
+/// two_level_coarse_faces() faces keeping it, the ε levels but the last
+/// tuning::two_level_fine_levels on the copy at λ scaled as the coarse
+/// copy's (tuning::coarse_lambda_exponent), its map and v carried back
+/// (carry_coarse_map(), transfer_face_field()), then decide_cuts() on the
+/// input from its last levels. Returns false, with `state` at its initial
+/// cut mesh, where the copy could not be made, cut as the input, solved or
+/// carried (the caller then decides at full resolution); else `status` is
+/// the result.
+template <typename Surface>
+bool decide_cuts_on_two_levels(const Surface& surface, const std::vector<double>& face_lambda, double lambda,
+                               const Cut_parameterization_options& o, const Progress& progress, Map_state& state,
+                               Work_log& log, Error_code& status)
+{
+  const int levels = number_of_eps_levels(o);
+  const int fine_levels = tuning::two_level_fine_levels;
+  if(levels <= fine_levels) return false;
+  status = start_cut_mesh(surface, o, progress, state, log);
+  if(status != OK) return true;
+  Scoped_timer initialization(log.timings.initialization);
+  Coarse_surface coarse;
+  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda,
+                       two_level_coarse_faces(surface.number_of_faces()), coarse, true))
+    return false;
+  Map_state coarse_state;
+  coarse_state.is_cut = coarse.is_cut;
+  coarse_state.rules.forbidden = coarse.forbidden;
+  coarse_state.rules.edge_factor = edge_lambda_factors(coarse.surface, coarse.face_lambda);
+  // the copy must be cut where the input is: its initial cut adds nothing
+  if(initial_map(coarse.surface, coarse_state) != OK || coarse_state.is_cut != coarse.is_cut) return false;
+  initialization.stop();
+  const double coarse_lambda
+    = lambda * std::pow(mean_edge_length(surface) / mean_edge_length(coarse.surface), tuning::coarse_lambda_exponent);
+  status = alternate_levels(coarse.surface, coarse.face_lambda, coarse_lambda, o, progress, 0,
+                            Eps_levels{0, levels - fine_levels}, coarse_state, log);
+  if(status == ERROR_CANCELED) return true;
+  if(status != OK) return (status = OK), false; // the copy's solve failed: the input's may not
+  Scoped_timer carrying(log.timings.initialization);
+  if(!carry_coarse_map(surface, coarse, coarse_state, state)) return false;
+  state.v = transfer_face_field(surface, coarse, coarse_state.v);
+  carrying.stop();
+  status = decide_cuts(surface, face_lambda, lambda, o, progress, state, log, Eps_levels{levels - fine_levels});
+  return true;
+}
+
+} // namespace cut
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
