@@ -260,6 +260,8 @@ constexpr double shape_packing_margin = 1.01;
 /// above this many charts the rectangle packing (about O(n²)) is skipped when the shape packing is on
 /// (the layout may then fill less than the rectangles would)
 constexpr int rectangle_packing_max_charts = 20000;
+/// above this many charts the raster placement (atlas/raster_placement.h) is not tried (time)
+constexpr int raster_placement_max_charts = 4000;
 
 
 

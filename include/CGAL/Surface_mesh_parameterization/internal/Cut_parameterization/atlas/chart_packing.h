@@ -36,6 +36,7 @@ struct Packing_settings
   double padding = 2.;      ///< gap in texels between two charts, and between a chart and the square's sides
   bool world_units = false; ///< true: keep the 3D scale (scale 1); the layout is the same, in world units
   bool shapes = true;       ///< also try the shape packing (rasters of the charts), kept where it packs larger
+  bool raster = true;       ///< in the shape packing, also try the raster placement (holes under overhangs filled)
 };
 
 struct Packing_result
@@ -44,6 +45,7 @@ struct Packing_result
   double scale = 1.;    ///< common factor applied to every chart (UV length per input UV length); 1 in world units
   double side = 1.;     ///< side of the packing square in the output units (1 unless world_units)
   bool by_shape = false; ///< the shape packing was kept (charts' bounding rectangles may overlap)
+  bool by_raster = false; ///< ... with the raster placement (not the skyline)
 };
 
 namespace packing {
@@ -416,7 +418,7 @@ inline Packing_result pack_charts(const Chart_mesh& mesh, UV_vector& x,
   double scale = packing::largest_packing_scale(size, settings, pad, room, best, rectangles);
   const double by_shape = settings.shapes
                               ? packing::pack_shapes(mesh, chart_of_face, chart_of_vertex, local, size, settings.texture_size,
-                                                     settings.padding, scale, x)
+                                                     settings.padding, scale, x, settings.raster, &result.by_raster)
                               : 0.;
   result.by_shape = by_shape > 0.;
   if(result.by_shape) scale = by_shape;

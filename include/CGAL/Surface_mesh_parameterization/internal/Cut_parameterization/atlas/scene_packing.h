@@ -1,6 +1,8 @@
 // Scene atlas layout: the charts of several meshes, all at one texel density
 // (texels per unit of 3D length), on one or more square pages; every chart
-// of a mesh on the same page. Charts are shape-packed (shape_packing.h).
+// of a mesh on the same page. Charts are shape-packed (shape_packing.h), by
+// the skyline and by the raster placement; the layout of larger density (or,
+// at a given density, of fewer pages) is kept.
 #ifndef CGAL_SMP_CUT_INTERNAL_SCENE_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_SCENE_PACKING_H
 
@@ -65,14 +67,51 @@ inline packing::Chart_shape chart_shape(const std::vector<std::array<Vector2, 3>
   return shape;
 }
 
-/// Drops the charts `which` (largest first) on `skyline`; false if one does not fit.
-inline bool drop_charts(const std::vector<Scene_chart>& charts, std::vector<int> which, packing::Skyline& skyline,
-                        Scene_layout& layout)
+/// Drops the charts `which` (largest first) on `skyline` (a Skyline or a Raster_page); false if one does not fit.
+template <typename Placer>
+bool drop_charts(const std::vector<Scene_chart>& charts, std::vector<int> which, Placer& skyline, Scene_layout& layout)
 {
   auto key = [&](int c) { return std::make_pair(charts[c].shape.size.maxCoeff(), charts[c].shape.size.minCoeff()); };
   std::stable_sort(which.begin(), which.end(), [&](int a, int b) { return key(a) > key(b); });
   for(int c : which)
     if(!skyline.drop(layout.rasters[c], layout.placed[c])) return false;
+  return true;
+}
+
+/// Puts the meshes' charts (rasters in `layout`) on pages of `Placer`s:
+/// each mesh, largest total area first, on the first page that holds all its
+/// charts. False if a mesh does not fit an empty page.
+template <typename Placer>
+bool paginate(const std::vector<Scene_chart>& charts, int number_of_meshes, int n, int pad, Scene_layout& layout)
+{
+  layout.placed.assign(charts.size(), packing::Raster_placement());
+  std::vector<std::vector<int>> charts_of_mesh(number_of_meshes);
+  std::vector<double> mesh_area(number_of_meshes, 0.);
+  for(std::size_t c = 0; c < charts.size(); ++c)
+  {
+    charts_of_mesh[charts[c].mesh].push_back(int(c));
+    mesh_area[charts[c].mesh] += charts[c].shape.area;
+  }
+  std::vector<int> meshes(number_of_meshes);
+  std::iota(meshes.begin(), meshes.end(), 0);
+  std::stable_sort(meshes.begin(), meshes.end(), [&](int a, int b) { return mesh_area[a] > mesh_area[b]; });
+  std::vector<Placer> pages;
+  for(int m : meshes)
+  {
+    if(charts_of_mesh[m].empty()) continue;
+    bool placed = false;
+    for(std::size_t p = 0; p <= pages.size() && !placed; ++p)
+    {
+      Placer trial = p < pages.size() ? pages[p] : Placer(n, pad);
+      if(!drop_charts(charts, charts_of_mesh[m], trial, layout)) continue;
+      if(p < pages.size()) pages[p] = trial;
+      else pages.push_back(trial);
+      layout.page_of_mesh[m] = int(p);
+      placed = true;
+    }
+    if(!placed) return false; // not even an empty page holds it
+  }
+  layout.pages = int(pages.size());
   return true;
 }
 
@@ -97,41 +136,27 @@ inline bool layout_scene(const std::vector<Scene_chart>& charts, int number_of_m
   if(!(area > 0.)) return false;
   if(texels_per_unit == 0.) // the largest density on one page
   {
-    layout.texels_per_unit = packing::largest_shape_scale(shapes, n, pad, 0., (n - 2. * pad) / std::sqrt(area),
-                                                          layout.rasters, layout.placed);
+    const double high = (n - 2. * pad) / std::sqrt(area);
+    layout.texels_per_unit = packing::largest_shape_scale(shapes, n, pad, 0., high, layout.rasters, layout.placed);
+    if(int(charts.size()) <= tuning::raster_placement_max_charts)
+    {
+      Scene_layout by_bits = layout;
+      by_bits.texels_per_unit = packing::largest_shape_scale<packing::Raster_page>(
+        shapes, n, pad, layout.texels_per_unit, high, by_bits.rasters, by_bits.placed);
+      if(by_bits.texels_per_unit > layout.texels_per_unit) layout = by_bits; // found only above the skyline's
+    }
     layout.pages = 1;
     return layout.texels_per_unit > 0.;
   }
   layout.texels_per_unit = texels_per_unit;
   for(const packing::Chart_shape& s : shapes) layout.rasters.push_back(packing::rasterize(s, texels_per_unit));
-  layout.placed.assign(charts.size(), packing::Raster_placement());
-  std::vector<std::vector<int>> charts_of_mesh(number_of_meshes);
-  std::vector<double> mesh_area(number_of_meshes, 0.);
-  for(std::size_t c = 0; c < charts.size(); ++c)
+  if(!paginate<packing::Skyline>(charts, number_of_meshes, n, pad, layout)) return false;
+  if(int(charts.size()) <= tuning::raster_placement_max_charts && layout.pages > 1)
   {
-    charts_of_mesh[charts[c].mesh].push_back(int(c));
-    mesh_area[charts[c].mesh] += charts[c].shape.area;
+    Scene_layout by_bits = layout;
+    if(paginate<packing::Raster_page>(charts, number_of_meshes, n, pad, by_bits) && by_bits.pages < layout.pages)
+      layout = by_bits;
   }
-  std::vector<int> meshes(number_of_meshes);
-  std::iota(meshes.begin(), meshes.end(), 0);
-  std::stable_sort(meshes.begin(), meshes.end(), [&](int a, int b) { return mesh_area[a] > mesh_area[b]; });
-  std::vector<packing::Skyline> pages;
-  for(int m : meshes)
-  {
-    if(charts_of_mesh[m].empty()) continue;
-    bool placed = false;
-    for(std::size_t p = 0; p <= pages.size() && !placed; ++p)
-    {
-      packing::Skyline trial = p < pages.size() ? pages[p] : packing::Skyline(n, pad);
-      if(!drop_charts(charts, charts_of_mesh[m], trial, layout)) continue;
-      if(p < pages.size()) pages[p] = trial;
-      else pages.push_back(trial);
-      layout.page_of_mesh[m] = int(p);
-      placed = true;
-    }
-    if(!placed) return false; // not even an empty page holds it
-  }
-  layout.pages = int(pages.size());
   return true;
 }
 

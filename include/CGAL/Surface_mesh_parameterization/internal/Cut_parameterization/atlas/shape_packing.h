@@ -14,16 +14,23 @@
 // touching, even with padding 0). Turns by 90° about texel corners and
 // integer texel offsets map the raster exactly, so the placement is exact.
 // The scale is searched between a scale that is known to pack (the
-// rectangle packing's) and the area bound.
+// rectangle packing's) and the area bound. The same search is then run with
+// the raster placement (raster_placement.h: charts anywhere on a bit image
+// of the page, holes under overhangs included), above the skyline's scale;
+// the larger scale is kept, so the raster placement can only raise the
+// coverage.
 #ifndef CGAL_SMP_CUT_INTERNAL_SHAPE_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_SHAPE_PACKING_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_raster.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/raster_placement.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -31,102 +38,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace cut {
 namespace packing {
-
-/// Triangles of one chart, in its turned frame (lower corner at the origin).
-struct Chart_shape
-{
-  std::vector<std::array<Vector2, 3>> triangles;
-  Vector2 size = Vector2::Zero(); ///< extent of the chart in its frame
-  double area = 0.;               ///< area of its triangles
-};
-
-/// A chart's conservative raster at one scale: `w` × `h` texels; the chart,
-/// scaled, lies in [0, w] × [0, h] after adding `shift` (texel units).
-/// Extents: texels of column i span rows [col_lo[i], col_hi[i]], those of
-/// row j columns [row_lo[j], row_hi[j]].
-struct Chart_raster
-{
-  int w = 0, h = 0;
-  Vector2 shift = Vector2::Zero();
-  std::vector<int> col_lo, col_hi, row_lo, row_hi;
-};
-
-/// Adds the texels touched by triangle `t` (texel units, inside [0, w] × [0, h]) to `r`.
-inline void rasterize_triangle(const std::array<Vector2, 3>& t, Chart_raster& r)
-{
-  const double m = tuning::raster_margin_texels;
-  auto cell = [](double v, int n) { return (std::min)(n - 1, (std::max)(0, int(std::floor(v)))); };
-  const double y0 = (std::min)({t[0].y(), t[1].y(), t[2].y()}), y1 = (std::max)({t[0].y(), t[1].y(), t[2].y()});
-  for(int j = cell(y0 - m, r.h), j1 = cell(y1 + m, r.h); j <= j1; ++j)
-  {
-    // x extent of the triangle within the band [j - m, j + 1 + m]
-    const double b0 = j - m, b1 = j + 1 + m;
-    double a = std::numeric_limits<double>::infinity(), b = -a;
-    for(int k = 0; k < 3; ++k)
-    {
-      const Vector2& p = t[k];
-      const Vector2& q = t[(k + 1) % 3];
-      if(p.y() >= b0 && p.y() <= b1) { a = (std::min)(a, p.x()); b = (std::max)(b, p.x()); }
-      for(double yb : {b0, b1})
-        if((p.y() - yb) * (q.y() - yb) < 0.)
-        {
-          const double x = p.x() + (q.x() - p.x()) * (yb - p.y()) / (q.y() - p.y());
-          a = (std::min)(a, x);
-          b = (std::max)(b, x);
-        }
-    }
-    if(!(a <= b)) continue;
-    const int i0 = cell(a - m, r.w), i1 = cell(b + m, r.w);
-    r.row_lo[j] = (std::min)(r.row_lo[j], i0);
-    r.row_hi[j] = (std::max)(r.row_hi[j], i1);
-    for(int i = i0; i <= i1; ++i)
-    {
-      r.col_lo[i] = (std::min)(r.col_lo[i], j);
-      r.col_hi[i] = (std::max)(r.col_hi[i], j);
-    }
-  }
-}
-
-/// The raster of `shape` scaled by `texels` (texels per unit of its frame),
-/// centered in the fewest texels that hold it with the margin.
-inline Chart_raster rasterize(const Chart_shape& shape, double texels)
-{
-  Chart_raster r;
-  const double m = tuning::raster_margin_texels;
-  const Vector2 ext = texels * shape.size;
-  r.w = int(std::floor(ext.x() + 2. * m)) + 1;
-  r.h = int(std::floor(ext.y() + 2. * m)) + 1;
-  r.shift = 0.5 * (Vector2(r.w, r.h) - ext);
-  r.col_lo.assign(r.w, INT_MAX); r.col_hi.assign(r.w, INT_MIN);
-  r.row_lo.assign(r.h, INT_MAX); r.row_hi.assign(r.h, INT_MIN);
-  for(const auto& t : shape.triangles)
-    rasterize_triangle({texels * t[0] + r.shift, texels * t[1] + r.shift, texels * t[2] + r.shift}, r);
-  // a column or row no triangle reached (degenerate triangles): treat as full
-  for(int i = 0; i < r.w; ++i) if(r.col_lo[i] > r.col_hi[i]) { r.col_lo[i] = 0; r.col_hi[i] = r.h - 1; }
-  for(int j = 0; j < r.h; ++j) if(r.row_lo[j] > r.row_hi[j]) { r.row_lo[j] = 0; r.row_hi[j] = r.w - 1; }
-  return r;
-}
-
-/// Lower and upper profiles of raster `r` turned by `turn` quarter turns
-/// counterclockwise (cell (i, j) goes to (h-1-j, i) by one turn): width, and
-/// per column the lowest and highest texel rows.
-inline int turned_profiles(const Chart_raster& r, int turn, std::vector<int>& lo, std::vector<int>& hi)
-{
-  const int w = (turn % 2) ? r.h : r.w;
-  lo.resize(w); hi.resize(w);
-  for(int i = 0; i < w; ++i)
-    switch(turn)
-    {
-      case 0: lo[i] = r.col_lo[i]; hi[i] = r.col_hi[i]; break;
-      case 1: lo[i] = r.row_lo[r.h - 1 - i]; hi[i] = r.row_hi[r.h - 1 - i]; break;
-      case 2: lo[i] = r.h - 1 - r.col_hi[r.w - 1 - i]; hi[i] = r.h - 1 - r.col_lo[r.w - 1 - i]; break;
-      default: lo[i] = r.w - 1 - r.row_hi[i]; hi[i] = r.w - 1 - r.row_lo[i]; break;
-    }
-  return w;
-}
-
-/// Where a chart's raster went: texel offset of its (turned) raster, and the turn.
-struct Raster_placement { int x = 0, y = 0, turn = 0; };
 
 /// Largest value of `sky` over each window [x, x + w), for x in [first, last]:
 /// `out[x]` (van Herk / Gil-Werman: block prefix and suffix maxima, O(n)).
@@ -235,15 +146,16 @@ public:
   }
 };
 
-/// Drops each raster, in `order`, on the skyline of an `n` × `n` texel
-/// square with `pad` texels of padding. Returns 1 if all fit, else the
+/// Drops each raster, in `order`, on a `Placer` (Skyline or Raster_page) of
+/// an `n` × `n` texel square with `pad` texels of padding. Returns 1 if all fit, else the
 /// fill ratio reached (area of the charts placed, `area` in texels, over the
 /// texels below the skyline; 0 if none was placed). Stops early when the
 /// charts left have more area than the texels above the skyline.
-inline double drop_rasters(const std::vector<Chart_raster>& rasters, const std::vector<double>& area,
-                           const std::vector<int>& order, int n, int pad, std::vector<Raster_placement>& placement)
+template <typename Placer>
+double drop_rasters(const std::vector<Chart_raster>& rasters, const std::vector<double>& area,
+                    const std::vector<int>& order, int n, int pad, std::vector<Raster_placement>& placement)
 {
-  Skyline skyline(n, pad);
+  Placer skyline(n, pad);
   placement.assign(rasters.size(), Raster_placement());
   double left = 0.;
   for(double a : area) left += a;
@@ -260,28 +172,13 @@ inline double drop_rasters(const std::vector<Chart_raster>& rasters, const std::
   return 1.;
 }
 
-/// Maps point `p` of a chart's frame to texel coordinates of the square:
-/// scaled, shifted into its raster, turned, moved to its placement.
-inline Vector2 place_point(const Vector2& p, double texels, const Chart_raster& r, const Raster_placement& at)
-{
-  const Vector2 g = texels * p + r.shift;
-  Vector2 t;
-  switch(at.turn)
-  {
-    case 0: t = g; break;
-    case 1: t = Vector2(r.h - g.y(), g.x()); break;
-    case 2: t = Vector2(r.w - g.x(), r.h - g.y()); break;
-    default: t = Vector2(g.y(), r.w - g.x()); break;
-  }
-  return t + Vector2(at.x, at.y);
-}
-
 /// Shape packing of `shapes` into an `n` × `n` texel square with `pad`
 /// texels of padding: the largest scale (texels per unit of the charts'
 /// frames) found in (`low`, `high`] at which all charts drop (down from
 /// `high` by tuning::shape_packing_step or more, then bisected), with their
 /// rasters and placements; 0 if none was found above `low`.
-inline double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
+template <typename Placer = Skyline>
+double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
                                   std::vector<Chart_raster>& rasters, std::vector<Raster_placement>& placement)
 {
   std::vector<int> order(shapes.size());
@@ -299,7 +196,7 @@ inline double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n,
       trial_rasters[c] = rasterize(shapes[c], texels);
       area[c] = shapes[c].area * texels * texels;
     }
-    placed = drop_rasters(trial_rasters, area, order, n, pad, trial);
+    placed = drop_rasters<Placer>(trial_rasters, area, order, n, pad, trial);
     if(placed < 1.) return false;
     found = texels;
     rasters.swap(trial_rasters);
@@ -337,12 +234,15 @@ inline double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n,
 /// The shape packing of the charts of `mesh` (turned to their frames:
 /// `local`, extents `size`) at a scale above `scale` (UV per frame unit, the
 /// rectangles'), `padding` in texels of a `texture_size` square: writes the UVs of the charts' vertices into `x` and returns
-/// the scale, or returns 0 (nothing written) if it found none.
+/// the scale, or returns 0 (nothing written) if it found none. With
+/// `raster`, the raster placement is also tried (up to
+/// tuning::raster_placement_max_charts charts), kept where its scale is larger.
 inline double pack_shapes(const Chart_mesh& mesh, const std::vector<int>& chart_of_face,
                           const std::vector<int>& chart_of_vertex, const std::vector<Vector2>& local,
                           const std::vector<Vector2>& size, int texture_size, double padding,
-                          double scale, UV_vector& x)
+                          double scale, UV_vector& x, bool raster = true, bool* by_raster = nullptr)
 {
+  if(by_raster) *by_raster = false;
   const int n = texture_size;
   const int pad = std::isfinite(padding) ? int(std::ceil((std::max)(0., padding))) : 0;
   if(n <= 0 || size.size() < 2 || 2 * pad + 2 >= n) return 0.;
@@ -363,7 +263,21 @@ inline double pack_shapes(const Chart_mesh& mesh, const std::vector<int>& chart_
   const double high = (n - 2. * pad) / std::sqrt(area); // texels per unit filling the square
   std::vector<Chart_raster> rasters;
   std::vector<Raster_placement> at;
-  const double texels = largest_shape_scale(shapes, n, pad, scale * n, high, rasters, at);
+  double texels = largest_shape_scale(shapes, n, pad, scale * n, high, rasters, at);
+  if(raster && int(shapes.size()) <= tuning::raster_placement_max_charts)
+  {
+    std::vector<Chart_raster> raster_rasters;
+    std::vector<Raster_placement> raster_at;
+    const double by_bits = largest_shape_scale<Raster_page>(shapes, n, pad, (std::max)(scale * n, texels), high,
+                                                            raster_rasters, raster_at);
+    if(by_bits > texels) // found only above the skyline's scale
+    {
+      texels = by_bits;
+      rasters.swap(raster_rasters);
+      at.swap(raster_at);
+      if(by_raster) *by_raster = true;
+    }
+  }
   if(!(texels > 0.)) return 0.;
   // center the layout by whole texels (the rasters stay on the grid)
   int used_x = 0, used_y = 0;
