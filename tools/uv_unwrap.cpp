@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 
 #include "preview/preview.h"
+#include "preview/preview_of_mesh.h"
 #include "printable_text.h"
 
 #include <algorithm>
@@ -183,31 +184,13 @@ void write_pictures(const Options& options, const Mesh& mesh, const SeamMap& sea
   // The preview library takes plain arrays; a freshly read Surface_mesh has
   // contiguous indices.
   Preview_mesh preview;
-  for(auto vd : vertices(mesh))
-  {
-    const Point_3& p = mesh.point(vd);
-    preview.points.push_back({p.x(), p.y(), p.z()});
-  }
+  append_to_preview(preview, mesh, uvmap, seams);
   for(auto f : faces(mesh))
   {
-    std::array<int, 3> corners;
-    std::array<std::array<double, 2>, 3> uvs;
-    int k = 0;
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      corners[k] = int(target(h, mesh).idx());
-      uvs[k] = {uvmap[h].x(), uvmap[h].y()};
-      ++k;
-    }
-    preview.faces.push_back(corners);
-    preview.corner_uv.push_back(uvs);
     preview.face_distortion.push_back(
       SMP::face_distortion(f, mesh, uvmap, SMP::parameters::uv_scale(summary.result.uv_scale)));
     preview.face_v.push_back(v[f]);
   }
-  for(auto e : edges(mesh))
-    if(seams[e])
-      preview.seam_edges.emplace_back(int(source(e, mesh).idx()), int(target(e, mesh).idx()));
 
   if(!options.svg.empty())
   {

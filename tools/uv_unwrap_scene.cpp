@@ -2,6 +2,7 @@
 #include "uv_unwrap_scene.h"
 
 #include "preview/preview.h"
+#include "preview/preview_of_mesh.h"
 #include "printable_text.h"
 
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
@@ -41,29 +42,7 @@ void write_scene_svg(const std::string& filename, const Scene& scene, const Scen
   for(const Scene_part& part : scene.parts)
   {
     const Mesh& mesh = *part.mesh;
-    const int first = int(preview.points.size());
-    for(auto vd : vertices(mesh))
-    {
-      const Point_3& p = mesh.point(vd);
-      preview.points.push_back({p.x(), p.y(), p.z()});
-    }
-    for(auto f : faces(mesh))
-    {
-      std::array<int, 3> corners;
-      std::array<std::array<double, 2>, 3> uvs;
-      int k = 0;
-      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-      {
-        corners[k] = first + int(target(h, mesh).idx());
-        uvs[k] = {part.uvmap[h].x() + preview_page_offset * part.page, part.uvmap[h].y()};
-        ++k;
-      }
-      preview.faces.push_back(corners);
-      preview.corner_uv.push_back(uvs);
-    }
-    for(auto e : edges(mesh))
-      if(part.seams[e])
-        preview.seam_edges.emplace_back(first + int(source(e, mesh).idx()), first + int(target(e, mesh).idx()));
+    append_to_preview(preview, mesh, part.uvmap, part.seams, preview_page_offset * part.page);
     caption.faces += num_faces(mesh);
   }
   if(!write_uv_svg(filename, preview, caption))
