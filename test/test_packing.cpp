@@ -556,3 +556,40 @@ TEST(Packing, raster_placement_fills_holes_the_skyline_cannot_reach)
     EXPECT_LT(seconds, 1.);
   }
 }
+
+namespace {
+// A w × h raster whose every texel is set (its extents the whole rectangle).
+ic::packing::Chart_raster full_raster(int w, int h)
+{
+  ic::packing::Chart_raster r;
+  r.w = w; r.h = h; r.words = (w + 63) / 64;
+  r.col_lo.assign(w, 0); r.col_hi.assign(w, h - 1);
+  r.row_lo.assign(h, 0); r.row_hi.assign(h, w - 1);
+  r.bits.assign(std::size_t(h) * r.words, 0);
+  for(int j = 0; j < h; ++j) ic::packing::set_bits(&r.bits[std::size_t(j) * r.words], 0, w - 1);
+  return r;
+}
+} // namespace
+
+TEST(Packing, a_one_row_raster_is_placed_beside_a_chart_in_its_row)
+{
+  // the first row tried holds a chart at its left: the one-row raster's
+  // position moves right, where its single row agrees at once (once looped
+  // forever: a sliver chart of CGAL's mpi_triang.off)
+  const int n = 128, pad = 2;
+  ic::packing::Raster_page page(n, pad);
+  ic::packing::Raster_placement square, sliver, turned;
+  ASSERT_TRUE(page.drop(full_raster(30, 30), square));
+  EXPECT_EQ(square.x, pad);
+  EXPECT_EQ(square.y, pad);
+  ASSERT_TRUE(page.drop(full_raster(40, 1), sliver));
+  EXPECT_EQ(sliver.turn % 2, 0);
+  EXPECT_EQ(sliver.y, pad);                     // the lowest row
+  EXPECT_GT(sliver.x, square.x + 30 + pad - 1); // right of the square, more than pad texels apart
+  EXPECT_LE(sliver.x + 40, n - pad);
+  // a one-column raster: placed turned into one row, or upright beside them
+  ASSERT_TRUE(page.drop(full_raster(1, 40), turned));
+  const bool lying = turned.turn % 2 != 0;
+  EXPECT_LE(turned.x + (lying ? 40 : 1), n - pad);
+  EXPECT_LE(turned.y + (lying ? 1 : 40), n - pad);
+}

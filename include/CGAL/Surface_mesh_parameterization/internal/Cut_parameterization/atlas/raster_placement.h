@@ -72,6 +72,7 @@ class Raster_page
   /// First clear bit of row `r` at or after `q`; INT_MAX if none.
   int next_clear(const std::uint64_t* r, int q) const
   {
+    if(q >= 64 * words_) return INT_MAX; // past the row's last word
     int k = q / 64;
     std::uint64_t w = ~r[k] & (~std::uint64_t(0) << (q % 64));
     while(!w)
@@ -152,8 +153,8 @@ class Raster_page
       const int j = order_[k];
       const int q = next_run(row(y + j), x + lo_[j], hi_[j] - lo_[j] + 1);
       if(q == INT_MAX || q - lo_[j] > last) return -1;
-      if(q - lo_[j] == x) { if(++agreed == h) return x; }
-      else { x = q - lo_[j]; agreed = 1; } // every row is tried again at the new x
+      if(q - lo_[j] != x) { x = q - lo_[j]; agreed = 0; } // every row is tried again at the new x
+      if(++agreed == h) return x; // counted after the move: a one-row raster fits at once
     }
   }
 
