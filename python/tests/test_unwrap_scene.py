@@ -1,6 +1,7 @@
 """uv_unwrap.unwrap_scene(): several meshes in one atlas, measured on the UVs it returns (all meshes of a
 page together): UVs in [0,1], no flipped triangle, no texel covered twice, the same texel density for
-every mesh, pages when the density asked for does not fit one."""
+every mesh, pages when the density asked for does not fit one; with stacking_tolerance, rigid copies of a
+mesh take its texels (its UVs, not packed again) while a mirror image and a scaled copy get their own."""
 import numpy as np
 import pytest
 
@@ -138,10 +139,3 @@ def test_stacked_copies_share_the_texels_of_one():
     with pytest.raises(ValueError, match="unwrap_scene"):
         uv_unwrap.unwrap(V, F, stacking_tolerance=1e-4)
 
-
-def test_hard_edges_in_the_statistics():
-    V = np.array([[x, 2.0 * y, 3.0 * z] for z in (0, 1) for y in (0, 1) for x in (0, 1)])
-    F = np.array([[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
-                  [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]])
-    assert uv_unwrap.unwrap(V, F, hard_edge_angle=30.0).stats["hard_edges"] == 12  # the box's edges
-    assert uv_unwrap.unwrap(V, F).stats["hard_edges"] == 0
