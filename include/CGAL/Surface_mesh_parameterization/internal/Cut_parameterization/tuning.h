@@ -266,6 +266,8 @@ constexpr int raster_placement_max_charts = 4000;
 /// in several drop orders, bisected more finely, and with the charts' free orientations: each is a search
 /// of its own
 constexpr int raster_orders_max_charts = 200;
+/// ... and up to this padding in texels (the raster placement's marking grows with the padding)
+constexpr int raster_orders_max_padding = 16;
 /// ... in this many orders (atlas/shape_packing.h drop_order())
 constexpr int raster_placement_orders = 3;
 /// ... each bisected this many times

@@ -124,7 +124,8 @@ bool paginate(const std::vector<Scene_chart>& charts, int number_of_meshes, int 
 /// as many pages as needed (each mesh first-fit, largest total area first,
 /// on the first page that holds all its charts); else the largest density
 /// at which every chart fits one page, where up to
-/// tuning::raster_orders_max_charts charts may also be turned to free
+/// tuning::raster_orders_max_charts charts (and padding up to
+/// tuning::raster_orders_max_padding texels) may also be turned to free
 /// angles (least_claiming_turn(), each sampling of tuning::chart_turn_samples
 /// tried, kept only for a larger density). False if a mesh does not fit one
 /// page (or nothing fits).
@@ -153,7 +154,7 @@ inline bool layout_scene(std::vector<Scene_chart>& charts, int number_of_meshes,
         packing::largest_raster_scale(shapes, n, pad, layout.texels_per_unit, high, by_bits.rasters, by_bits.placed);
       if(by_bits.texels_per_unit > layout.texels_per_unit) layout = by_bits; // found only above the skyline's
     }
-    if(int(charts.size()) <= tuning::raster_orders_max_charts)
+    if(int(charts.size()) <= tuning::raster_orders_max_charts && pad <= tuning::raster_orders_max_padding)
     {
       std::vector<packing::Chart_shape> best_turned;
       for(int samples : tuning::chart_turn_samples)

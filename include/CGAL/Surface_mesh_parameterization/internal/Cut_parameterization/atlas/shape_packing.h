@@ -253,7 +253,8 @@ double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pa
 
 /// The raster placement's scale search: largest_shape_scale() with a
 /// Raster_page, in the first drop_order() only, or, up to
-/// tuning::raster_orders_max_charts charts (few: each order is a search),
+/// tuning::raster_orders_max_charts charts and
+/// tuning::raster_orders_max_padding texels of padding (each order is a search),
 /// in each of the tuning::raster_placement_orders orders with
 /// tuning::raster_placement_refinements bisections, each order searched
 /// above the best scale so far. Returns the largest scale found in (`low`,
@@ -261,7 +262,7 @@ double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pa
 inline double largest_raster_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
                                    std::vector<Chart_raster>& rasters, std::vector<Raster_placement>& placement)
 {
-  const bool few = int(shapes.size()) <= tuning::raster_orders_max_charts;
+  const bool few = int(shapes.size()) <= tuning::raster_orders_max_charts && pad <= tuning::raster_orders_max_padding;
   const int orders = few ? tuning::raster_placement_orders : 1;
   const int refinements = few ? tuning::raster_placement_refinements : tuning::shape_packing_refinements;
   double best = 0.;
