@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -187,9 +188,12 @@ int thread_count_of(const py::object& threads)
 }
 
 // Unwraps `arrays` as uv_unwrap does, the GIL released; raises the
-// progress callback's exception or the library's failure.
+// progress callback's exception or the library's failure. `copied`, if
+// given, is asked first, once the mesh is built: true (a stacked copy, its
+// result filled by it) leaves the mesh without UVs.
 void unwrap_arrays(const Arrays& arrays, const uv_unwrap::Options& options, const py::object& progress,
-                   int thread_count, Unwrapped& out)
+                   int thread_count, Unwrapped& out,
+                   const std::function<bool(const Mesh&, uv_unwrap::Run_summary&)>& copied = {})
 {
   const auto& file_points = arrays.file_points;
   const auto& polygons = arrays.polygons;
@@ -247,6 +251,7 @@ void unwrap_arrays(const Arrays& arrays, const uv_unwrap::Options& options, cons
         {
           throw uv_unwrap::Failure(e.what(), "ERROR_WRONG_PARAMETER");
         }
+        if(copied && copied(mesh, summary)) return;
         One_blas_thread one_blas_thread;
         uv_unwrap::unwrap_mesh(options, mesh, seams, uvmap, v_field, on_progress,
                                [&](auto forbidden, auto face_lambda) {
@@ -319,6 +324,9 @@ Result unwrap(const py::object& V_object, const py::object& F_object,
   const uv_unwrap::Options options = options_of(given, hide_seams);
   if(options.method.texels_per_unit != 0.)
     throw py::value_error("texels_per_unit is the density of a scene atlas: give it to unwrap_scene()");
+  if(options.method.stacking_tolerance)
+    throw py::value_error("stacking_tolerance shares texels between the meshes of a scene atlas: give it to "
+                          "unwrap_scene()");
   const int thread_count = thread_count_of(threads);
   if(!progress.is_none() && !PyCallable_Check(progress.ptr())) throw py::type_error("progress must be callable");
   Unwrapped u;
@@ -364,9 +372,15 @@ std::vector<Result> unwrap_scene(const py::object& meshes_object, CUT_PARAM_OPTI
   std::vector<uv_unwrap::Scene_part> parts;
   for(std::size_t i = 0; i < arrays.size(); ++i)
   {
+    int original = -1;
+    auto copied = [&](const Mesh& mesh, uv_unwrap::Run_summary& summary) {
+      original = uv_unwrap::stacked_original(parts, mesh, options.method.stacking_tolerance);
+      if(original >= 0) uv_unwrap::take_stacked_result(parts[std::size_t(original)], summary);
+      return original >= 0;
+    };
     try
     {
-      unwrap_arrays(arrays[i], options, progress, thread_count, unwrapped[i]);
+      unwrap_arrays(arrays[i], options, progress, thread_count, unwrapped[i], copied);
     }
     catch(Unwrap_failure& e)
     {
@@ -376,7 +390,8 @@ std::vector<Result> unwrap_scene(const py::object& meshes_object, CUT_PARAM_OPTI
     Mesh& mesh = *unwrapped[i].mesh;
     parts.push_back({i, "meshes[" + std::to_string(i) + "]", unwrapped[i].mesh,
                      mesh.property_map<edge_descriptor, bool>("e:seam").first,
-                     mesh.property_map<halfedge_descriptor, Point_2>("h:uv").first, {}});
+                     mesh.property_map<halfedge_descriptor, Point_2>("h:uv").first, {}, -1, original,
+                     unwrapped[i].summary.result});
   }
   uv_unwrap::Scene_packing packing;
   try
@@ -480,9 +495,11 @@ pages of texture_size texels per side with padding texels between charts; a mesh
 hide_seams, progress, threads: as in unwrap().
 
 Returns a list of Result, one per mesh in order: uv in [0,1]^2 of the mesh's page, faces_uv, seams,
-face_charts, page (the page's number), stats (with "atlas": pages, page_count, texels_per_unit and the
-measures of every page on the combined UVs of its meshes: flipped_faces, border_crossings, overlap_area,
-uv_coverage). Raises UnwrapError (name ERROR_WRONG_PARAMETER) when a mesh does not fit one page at the
+face_charts, page (the page's number), stats (with "atlas": pages, stacked_on (the mesh, "meshes[j]", whose
+texels it shares, or None), page_count, texels_per_unit, charts_packed and the measures of every page on the
+combined UVs of its meshes with texels of their own: flipped_faces, border_crossings, overlap_area,
+uv_coverage). With stacking_tolerance, a mesh that a rotation and a translation move onto an earlier one
+(same faces over the same vertex order) is not unwrapped: it gets that mesh's UVs and seams. Raises UnwrapError (name ERROR_WRONG_PARAMETER) when a mesh does not fit one page at the
 density given.)doc";
   m.def("unwrap_scene", &unwrap_scene, py::arg("meshes"), py::kw_only(), CUT_PARAM_OPTION_TABLE(CUT_PARAM_PY_KEYWORD)
         py::arg("seams") = py::none(), py::arg("forbidden") = py::none(), py::arg("hide_seams") = py::none(),

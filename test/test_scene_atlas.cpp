@@ -1,11 +1,18 @@
 // Scene atlas (pack_scene_atlas.h): flat meshes given UVs at different
 // scales are packed at one texel density, on one page or split over pages;
 // every UV in [0,1], 0 overlap across the meshes of a page (combined UVs),
-// densities equal within 1%, errors leave the UVs unchanged.
+// densities equal within 1%, errors leave the UVs unchanged. Free angles
+// (atlas/chart_orientation.h): a turn is a rotation (no mirror, area kept),
+// an X claims fewer texels turned by 45°, a rectangle is never turned, and a
+// scene of X-shaped meshes packs valid, each chart moved by a similarity,
+// the same bits on every run.
 #include "generators.h"
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_orientation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/geometry/uv_coverage_raster.h>
 #include <CGAL/Surface_mesh_parameterization/pack_scene_atlas.h>
+
+#include <map>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace P = CGAL::Surface_mesh_parameterization::parameters;
@@ -104,7 +111,140 @@ void check_scene(const Scene& scene, const SMP::Scene_atlas_result& r, int textu
   }
 }
 
+/// A plus sign of five unit squares (each two triangles, shared corners),
+/// turned by `angle` about the origin: an X at 45°.
+Soup plus_soup(double angle)
+{
+  Soup soup;
+  const double co = std::cos(angle), si = std::sin(angle);
+  std::map<std::pair<int, int>, std::size_t> index;
+  auto corner = [&](int x, int y) {
+    const auto it = index.find({x, y});
+    if(it != index.end()) return it->second;
+    const std::size_t v = soup.add_point(co * x - si * y, si * x + co * y, 0.);
+    index[{x, y}] = v;
+    return v;
+  };
+  for(const auto& [x, y] : std::vector<std::pair<int, int>>{{1, 1}, {0, 1}, {2, 1}, {1, 0}, {1, 2}})
+  {
+    const std::size_t a = corner(x, y), b = corner(x + 1, y), c = corner(x + 1, y + 1), d = corner(x, y + 1);
+    soup.faces.push_back({a, b, c});
+    soup.faces.push_back({a, c, d});
+  }
+  return soup;
+}
+
+/// A chart shape of the triangles of `soup` (its xy).
+SMP::internal::cut::packing::Chart_shape shape_of(const Soup& soup)
+{
+  namespace ic = SMP::internal::cut;
+  ic::packing::Chart_shape shape;
+  ic::Vector2 low = ic::Vector2::Constant(1e300), high = -low;
+  for(const Soup::Point& p : soup.points)
+  {
+    low = low.cwiseMin(ic::Vector2(p[0], p[1]));
+    high = high.cwiseMax(ic::Vector2(p[0], p[1]));
+  }
+  for(const auto& f : soup.faces)
+  {
+    std::array<ic::Vector2, 3> t;
+    for(int k = 0; k < 3; ++k) t[k] = ic::Vector2(soup.points[f[k]][0], soup.points[f[k]][1]) - low;
+    shape.triangles.push_back(t);
+    const ic::Vector2 e1 = t[1] - t[0], e2 = t[2] - t[0];
+    shape.area += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  shape.size = high - low;
+  return shape;
+}
+
 } // namespace
+
+TEST(Chart_orientation, a_turn_is_rigid_and_an_x_claims_less_turned_back)
+{
+  namespace pk = SMP::internal::cut::packing;
+  const pk::Chart_shape x = shape_of(plus_soup(0.25 * M_PI)); // an X: its rows' extents claim its bays
+  const pk::Chart_shape plus = shape_of(plus_soup(0.));
+  EXPECT_GT(pk::claimed_area(x), 1.25 * x.area);
+  EXPECT_NEAR(pk::claimed_area(plus), plus.area, 0.1 * plus.area); // rows of a plus are whole
+  const pk::Chart_shape turned = pk::least_claiming_turn(x, 4); // 0, 22.5, 45, 67.5 degrees
+  EXPECT_LT(pk::claimed_area(turned), 0.85 * pk::claimed_area(x));
+  EXPECT_NEAR(pk::claimed_area(turned), pk::claimed_area(plus), 0.01 * plus.area);
+  EXPECT_NEAR(turned.size.x(), 3., 1e-9); // the plus again: 3 x 3
+  EXPECT_NEAR(turned.size.y(), 3., 1e-9);
+  ASSERT_EQ(turned.triangles.size(), x.triangles.size());
+  EXPECT_EQ(turned.area, x.area);
+  for(std::size_t t = 0; t < x.triangles.size(); ++t)
+  {
+    const auto &a = x.triangles[t], &b = turned.triangles[t];
+    auto cross = [](const std::array<SMP::internal::cut::Vector2, 3>& q) {
+      const auto e1 = q[1] - q[0], e2 = q[2] - q[0];
+      return e1.x() * e2.y() - e1.y() * e2.x(); };
+    EXPECT_NEAR(cross(a), cross(b), 1e-12) << "no mirror, area kept";
+    for(int k = 0; k < 3; ++k)
+      EXPECT_NEAR((a[k] - a[(k + 1) % 3]).norm(), (b[k] - b[(k + 1) % 3]).norm(), 1e-12) << "rigid";
+    for(const auto& p : b) EXPECT_TRUE(p.x() >= -1e-12 && p.y() >= -1e-12) << "lower corner at the origin";
+  }
+  // a rectangle's rows are whole at angle 0: never turned
+  const pk::Chart_shape rectangle = shape_of(grid_soup(3, 2, 2., 1.));
+  const pk::Chart_shape kept = pk::least_claiming_turn(rectangle, 5);
+  EXPECT_EQ(kept.size, rectangle.size);
+  EXPECT_EQ(kept.triangles, rectangle.triangles);
+}
+
+TEST(Scene_atlas, charts_at_free_angles_pack_valid_by_a_similarity_each)
+{
+  // X-shaped meshes (their UVs their xy): the free angles may turn them
+  Scene scene(0);
+  scene.meshes.reserve(6); // the UV maps are handles into the meshes: no reallocation
+  for(int m = 0; m < 6; ++m)
+  {
+    scene.meshes.push_back(make_mesh<Surface_mesh>(plus_soup(0.25 * M_PI + 0.05 * m)));
+    Surface_mesh& mesh = scene.meshes.back();
+    scene.uv.push_back(mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0., 0.)).first);
+    for(halfedge_descriptor h : halfedges(mesh))
+      scene.uv.back()[h] = Point_2(mesh.point(target(h, mesh)).x(), mesh.point(target(h, mesh)).y());
+  }
+  std::vector<Point_2> input;
+  for(std::size_t m = 0; m < scene.meshes.size(); ++m)
+    for(halfedge_descriptor h : halfedges(scene.meshes[m])) input.push_back(scene.uv[m][h]);
+  const SMP::Scene_atlas_result r = SMP::pack_scene_atlas(scene.atlas_meshes(), P::texture_size(128));
+  check_scene(scene, r, 128);
+  for(std::size_t m = 0; m < scene.meshes.size(); ++m)
+  {
+    const Surface_mesh& mesh = scene.meshes[m];
+    double low = 1e300, high = 0.;
+    for(halfedge_descriptor h : halfedges(mesh))
+    {
+      if(is_border(h, mesh)) continue;
+      const Point_2 &a = scene.uv[m][h], &b = scene.uv[m][prev(h, mesh)];
+      const double ratio = std::sqrt(CGAL::squared_distance(a, b)) /
+                           std::sqrt(CGAL::squared_distance(mesh.point(target(h, mesh)), mesh.point(source(h, mesh))));
+      low = (std::min)(low, ratio);
+      high = (std::max)(high, ratio);
+    }
+    EXPECT_LT(high / low - 1., 1e-9) << "mesh " << m << ": a similarity";
+    for(auto f : faces(mesh))
+    {
+      const halfedge_descriptor h = halfedge(f, mesh);
+      EXPECT_EQ(CGAL::orientation(scene.uv[m][h], scene.uv[m][next(h, mesh)], scene.uv[m][prev(h, mesh)]),
+                CGAL::LEFT_TURN) << "mesh " << m << ": no mirror";
+    }
+  }
+  // the same bits again, from the same input
+  std::vector<Point_2> first;
+  std::size_t j = 0;
+  for(std::size_t m = 0; m < scene.meshes.size(); ++m)
+    for(halfedge_descriptor h : halfedges(scene.meshes[m]))
+    {
+      first.push_back(scene.uv[m][h]);
+      scene.uv[m][h] = input[j++];
+    }
+  const SMP::Scene_atlas_result again = SMP::pack_scene_atlas(scene.atlas_meshes(), P::texture_size(128));
+  EXPECT_EQ(again.texels_per_unit, r.texels_per_unit);
+  std::size_t i = 0;
+  for(std::size_t m = 0; m < scene.meshes.size(); ++m)
+    for(halfedge_descriptor h : halfedges(scene.meshes[m])) EXPECT_EQ(scene.uv[m][h], first[i++]);
+}
 
 TEST(Scene_atlas, one_page_at_the_largest_density)
 {

@@ -349,6 +349,33 @@ TEST(Gltf_split_normals, are_seams_with_hard_edge_angle_only)
   fs::remove_all(dir);
 }
 
+// The statistics' hard_edges: the box's 12 edges at --hard-edge-angle 30 (its
+// face diagonals are flat), none without the option; a glTF adds up its primitives.
+TEST(Statistics, hard_edges_are_the_edges_cut_by_the_angle)
+{
+  ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";
+  const fs::path dir = fs::temp_directory_path() / "cut_param_hard_edge_statistics";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream box(dir / "box.obj");
+    for(int v = 0; v < 8; ++v) box << "v " << (v & 1) << ' ' << 2 * ((v >> 1) & 1) << ' ' << 3 * (v >> 2) << '\n';
+    // the six sides, each two triangles, outward
+    for(const char* f : {"1 3 4", "1 4 2", "5 6 8", "5 8 7", "1 2 6", "1 6 5",
+                         "3 7 8", "3 8 4", "1 5 7", "1 7 3", "2 4 8", "2 8 6"})
+      box << "f " << f << '\n';
+  }
+  const Unwrap_run hard = run_uv_unwrap(uv_unwrap_program, dir / "box.obj", dir / "hard.obj", "--hard-edge-angle 30");
+  ASSERT_TRUE(expect_valid_atlas(hard, "box, hard edges"));
+  EXPECT_EQ(hard.stats["hard_edges"], 12);
+  EXPECT_EQ(hard.stats["charts"], 6);
+  EXPECT_GE(hard.stats["seam_edges"].get<int>(), 12);
+  const Unwrap_run plain = run_uv_unwrap(uv_unwrap_program, dir / "box.obj", dir / "plain.obj");
+  ASSERT_TRUE(expect_valid_atlas(plain, "box"));
+  EXPECT_EQ(plain.stats["hard_edges"], 0);
+  fs::remove_all(dir);
+}
+
 TEST(Output_formats, each_format_is_written_and_read_back)
 {
   ASSERT_FALSE(uv_unwrap_program.empty()) << "set UV_UNWRAP to the uv_unwrap executable";

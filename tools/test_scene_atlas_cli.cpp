@@ -8,7 +8,12 @@
 // density that fits one page the scene goes on several pages, each valid,
 // and --svg frames every page. --uv-set 1 adds TEXCOORD_1 to the glTF
 // (TEXCOORD_0 kept) and writes an OBJ's one set with a warning;
-// --texels-per-unit without --atlas is refused.
+// --texels-per-unit without --atlas is refused. Stacked parts
+// (--stacking-tolerance): ten OBJ copies of a mesh moved rigidly and a glb
+// whose mesh ten nodes use, plus a rigid copy of it as a mesh of its own,
+// take the texels of one copy each: the charts packed and the density those
+// of the scene without the copies, every copy's UVs its original's, the
+// meshes with texels of their own a valid atlas.
 //   UV_UNWRAP=<uv_unwrap executable> test_scene_atlas_cli
 #include "tests/gltf_test_files.h"
 
@@ -46,15 +51,36 @@ struct Written_mesh
   std::vector<std::array<P2, 3>> uv;
 };
 
-// A bumpy open cylinder of radius r and height its circumference: it needs a seam, and its chart is squarish.
-void write_cylinder_obj(const fs::path& file, double r, int n)
+// The rotation by `angle` about the unit axis `u` (Rodrigues), applied to p.
+P3 rotated(const P3& p, const P3& u, double angle)
+{
+  const double c = std::cos(angle), s = std::sin(angle), d = u[0] * p[0] + u[1] * p[1] + u[2] * p[2];
+  const P3 x{u[1] * p[2] - u[2] * p[1], u[2] * p[0] - u[0] * p[2], u[0] * p[1] - u[1] * p[0]};
+  return {c * p[0] + s * x[0] + (1. - c) * d * u[0], c * p[1] + s * x[1] + (1. - c) * d * u[1],
+          c * p[2] + s * x[2] + (1. - c) * d * u[2]};
+}
+
+// A rigid motion that changes with k (k = 0: none): a turn about a tilted axis, then a shift.
+P3 moved(const P3& p, int k)
+{
+  if(k == 0) return p;
+  const double n = std::sqrt(1. + 0.09 * k * k + 0.25);
+  const P3 q = rotated(p, {1. / n, 0.3 * k / n, 0.5 / n}, 0.7 * k);
+  return {q[0] + 3. * k, q[1] - 1.5 * k, q[2] + 0.5};
+}
+
+// A bumpy open cylinder of radius r and height its circumference: it needs a seam, and its chart is
+// squarish; moved by moved(·, copy).
+void write_cylinder_obj(const fs::path& file, double r, int n, int copy = 0)
 {
   std::ofstream out(file);
+  out.precision(17);
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i < 2 * n; ++i)
     {
       const double a = M_PI * i / n, z = 2. * M_PI * r * j / n, rr = r * (1. + 0.1 * std::sin(3. * a) * std::sin(2. * z));
-      out << "v " << rr * std::cos(a) << ' ' << rr * std::sin(a) << ' ' << z << '\n';
+      const P3 p = moved({rr * std::cos(a), rr * std::sin(a), z}, copy);
+      out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
     }
   for(int j = 0; j < n; ++j)
     for(int i = 0; i < 2 * n; ++i)
@@ -111,6 +137,60 @@ void write_grids_gltf(const fs::path& file, int count)
   m.defaultScene = 0;
   tinygltf::TinyGLTF writer;
   ASSERT_TRUE(writer.WriteGltfSceneToFile(&m, file.string(), true, true, true, file.extension() == ".glb"));
+}
+
+// A glb of a bumpy grid (mesh 0) that `instances` nodes use, each with its
+// own rotation and translation, and of a rigid copy of it, moved in its
+// positions (mesh 1, one node).
+void write_instanced_gltf(const fs::path& file, int instances)
+{
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.buffers.emplace_back();
+  tinygltf::Scene scene;
+  for(int copy = 0; copy < 2; ++copy)
+  {
+    const int n = 12;
+    std::vector<float> pos;
+    std::vector<std::uint16_t> idx;
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+      {
+        const double x = 1.2 * i / n, y = 0.9 * j / n;
+        const P3 p = moved({x, y, 0.3 * std::sin(4. * x) * std::cos(3. * y)}, 3 * copy);
+        pos.insert(pos.end(), {float(p[0]), float(p[1]), float(p[2])});
+      }
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        const auto a = std::uint16_t(j * (n + 1) + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + n + 1),
+                   d = std::uint16_t(c + 1);
+        idx.insert(idx.end(), {a, b, d, a, d, c});
+      }
+    tinygltf::Primitive p;
+    p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                            TINYGLTF_TYPE_VEC3, pos.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
+    p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                             TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    p.mode = TINYGLTF_MODE_TRIANGLES;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(p);
+    m.meshes.push_back(mesh);
+    for(int k = 0; k < (copy == 0 ? instances : 1); ++k)
+    {
+      tinygltf::Node node;
+      node.mesh = copy;
+      const double half = 0.35 * k; // a turn about z by 0.7 k
+      node.rotation = {0., 0., std::sin(half), std::cos(half)};
+      node.translation = {2. * k, 5. * copy, 0.};
+      scene.nodes.push_back(int(m.nodes.size()));
+      m.nodes.push_back(node);
+    }
+  }
+  m.scenes.push_back(scene);
+  m.defaultScene = 0;
+  tinygltf::TinyGLTF writer;
+  ASSERT_TRUE(writer.WriteGltfSceneToFile(&m, file.string(), true, true, true, true));
 }
 
 Written_mesh read_obj(const fs::path& file)
@@ -289,6 +369,7 @@ std::vector<Written_mesh> run_scene(const fs::path& dir, const std::vector<fs::p
 }
 
 // Every page valid on its combined UVs; the density of every mesh `texels_per_unit` within 1%.
+// \pre `meshes` are those with texels of their own (no stacked copy)
 void expect_valid_pages(const std::vector<Written_mesh>& meshes, int pages, double texels_per_unit, int size)
 {
   for(int page = 0; page < pages; ++page)
@@ -390,6 +471,69 @@ TEST_F(Scene_atlas_cli, lightmap_set_beside_the_material_set)
       for(const P2& p : t)
         EXPECT_NEAR(p[0] * 10., std::round(p[0] * 10.), 1e-4) << w.name << ": TEXCOORD_0 changed";
   EXPECT_TRUE(has_warning(stats, "one set of texture coordinates")) << stats.dump();
+}
+
+TEST_F(Scene_atlas_cli, stacked_copies_take_the_texels_of_one)
+{
+  std::vector<fs::path> scene, alone;
+  for(int k = 0; k < 10; ++k)
+  {
+    scene.push_back(dir / ("copy" + std::to_string(k) + ".obj"));
+    write_cylinder_obj(scene.back(), 0.5, 8, k);
+  }
+  write_instanced_gltf(dir / "instances.glb", 10);
+  scene.push_back(dir / "instances.glb");
+  alone = {scene.front(), scene.back()};
+  const std::string options = "--atlas-size 256 --padding 2 --stacking-tolerance 1e-4";
+  nlohmann::json stats;
+  const std::vector<Written_mesh> one = run_scene(dir, alone, options, 0, stats);
+  ASSERT_EQ(one.size(), 3u) << "one cylinder, the glb's two meshes";
+  const double one_density = stats["atlas"]["texels_per_unit"].get<double>();
+  const int one_charts = stats["atlas"]["charts_packed"].get<int>();
+
+  const std::vector<Written_mesh> meshes = run_scene(dir, scene, options, 0, stats);
+  ASSERT_EQ(meshes.size(), 12u) << "ten cylinders, the glb's two meshes (its instances are nodes)";
+  EXPECT_EQ(stats["atlas"]["charts_packed"], one_charts) << "the copies' charts are not packed again";
+  const double density = stats["atlas"]["texels_per_unit"].get<double>();
+  EXPECT_NEAR(density, one_density, 1e-9 * one_density) << "the copies take no texels";
+  EXPECT_EQ(stats["atlas"]["stacked_on"], nlohmann::json::array({nullptr}));
+  // read every input's statistics back: who is stacked on whom
+  std::ifstream in(dir / "stats.jsonl");
+  std::vector<nlohmann::json> lines;
+  for(std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(lines.size(), scene.size());
+  for(std::size_t k = 1; k < 10; ++k)
+  {
+    ASSERT_EQ(lines[k]["atlas"]["stacked_on"].size(), 1u);
+    EXPECT_EQ(lines[k]["atlas"]["stacked_on"][0], scene.front().string()) << scene[k];
+    EXPECT_EQ(lines[k]["charts"], lines[0]["charts"]);
+  }
+  const auto& glb = lines[10]["atlas"]["stacked_on"];
+  ASSERT_EQ(glb.size(), 2u);
+  EXPECT_TRUE(glb[0].is_null());
+  EXPECT_EQ(glb[1], scene.back().string() + ", mesh 0, primitive 0") << "the rigid copy of the glb's mesh";
+  // the copies' UVs are their originals', corner by corner; the others a valid atlas
+  for(std::size_t k = 1; k < 10; ++k)
+  {
+    EXPECT_EQ(meshes[k].uv, meshes[0].uv) << meshes[k].name;
+    EXPECT_EQ(meshes[k].page, meshes[0].page);
+  }
+  EXPECT_EQ(meshes[11].uv, meshes[10].uv) << "the glb's copy";
+  const std::vector<Written_mesh> own{meshes[0], meshes[10]};
+  expect_valid_pages(own, 1, density, 256);
+  for(const auto& page : stats["atlas"]["page_measures"])
+  {
+    EXPECT_EQ(page["flipped_faces"], 0);
+    EXPECT_EQ(page["border_crossings"], 0);
+    EXPECT_EQ(page["overlap_area"], 0.);
+  }
+  // without the option every copy has texels of its own: a lower density
+  run_scene(dir, scene, "--atlas-size 256 --padding 2", 0, stats);
+  EXPECT_LT(stats["atlas"]["texels_per_unit"].get<double>(), 0.5 * density);
+  EXPECT_NE(exit_status("\"" + uv_unwrap_program + "\" \"" + scene[0].string() + "\" -q -o \"" +
+                        (dir / "x.obj").string() + "\" --stacking-tolerance 1e-4 2>/dev/null"),
+            0)
+    << "--stacking-tolerance without --atlas";
 }
 
 TEST_F(Scene_atlas_cli, density_without_atlas_is_refused)

@@ -72,6 +72,7 @@ inline nlohmann::ordered_json statistics(const Run_summary& s)
   j["welded_vertices"] = s.result.number_of_welded_vertices;
   j["charts"] = s.result.number_of_charts;
   j["seam_edges"] = s.result.number_of_seam_edges;
+  j["hard_edges"] = s.result.number_of_hard_edges; // of those seams, cut by hard_edge_angle
   j["seam_length"] = number(s.result.seam_length);
   j["distortion"] = number(s.result.distortion);
   j["distortion_bound_met"] = s.result.distortion_bound_met;

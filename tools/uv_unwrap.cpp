@@ -486,7 +486,15 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       if(!options.quiet)
         std::cout << "uv_unwrap: " << printable_text(input) << ", " << printable_text(name) << ": " << num_vertices(mesh) << " vertices, "
                   << num_faces(mesh) << " faces" << std::endl;
-      unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
+      const int original = scene ? uv_unwrap::stacked_original(scene->parts, mesh, options.method.stacking_tolerance) : -1;
+      if(original >= 0) // a rigid copy: its original's texels, given by the packing
+      {
+        uv_unwrap::take_stacked_result(scene->parts[std::size_t(original)], part);
+        if(!options.quiet)
+          std::cout << "  stacked on " << printable_text(scene->parts[std::size_t(original)].name) << std::endl;
+      }
+      else
+        unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
 
       // the UV of each corner: face i of the mesh is triangle i of the primitive
       // (with --atlas, once the scene is packed)
@@ -510,7 +518,8 @@ void run_gltf(const Options& options, const std::string& input, const output_for
         gltf_io::set_corner_uvs(*doc_ptr, ref, tri, uvs, uv_set);
       };
       if(scene)
-        scene->parts.push_back({scene->input, input + ", " + name, mesh_ptr, seams, uvmap, write_uvs});
+        scene->parts.push_back(
+          {scene->input, input + ", " + name, mesh_ptr, seams, uvmap, write_uvs, -1, original, part.result});
       else
         write_uvs();
 
@@ -533,6 +542,7 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       total.number_of_charts += r.number_of_charts;
       total.distortion_bound_met = total.distortion_bound_met && r.distortion_bound_met;
       total.number_of_seam_edges += r.number_of_seam_edges;
+      total.number_of_hard_edges += r.number_of_hard_edges;
       total.number_of_degenerate_faces += r.number_of_degenerate_faces;
       total.newton_iterations += r.newton_iterations;
       total.number_of_factorizations += r.number_of_factorizations;
@@ -637,7 +647,15 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
   const Mesh_source source{summary.input, &report};
-  unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, &source);
+  const int original = scene ? uv_unwrap::stacked_original(scene->parts, mesh, options.method.stacking_tolerance) : -1;
+  if(original >= 0) // a rigid copy: its original's texels, given by the packing
+  {
+    uv_unwrap::take_stacked_result(scene->parts[std::size_t(original)], summary);
+    if(!options.quiet)
+      std::cout << "  stacked on " << printable_text(scene->parts[std::size_t(original)].name) << std::endl;
+  }
+  else
+    unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, &source);
   if(options.uv_set > 0)
   {
     const std::string warning = std::string(format.name) + " has one set of texture coordinates: the UVs of --uv-set " +
@@ -647,7 +665,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   }
   if(scene)
   {
-    scene->parts.push_back({scene->input, summary.input, mesh_ptr, seams, uvmap, {}});
+    scene->parts.push_back({scene->input, summary.input, mesh_ptr, seams, uvmap, {}, -1, original, summary.result});
     scene->writers.push_back({scene->input, [mesh_ptr, report_ptr, uvmap, &format, output](Run_summary& s) {
       output_formats::Written written{s.input, report_ptr.get(), mesh_ptr.get(), &uvmap, s.warnings, nullptr};
       format.write(output, written);

@@ -251,6 +251,8 @@ bool parse_arguments(int argc, char** argv, Options& options)
   }
   if(given[cut_options::option_index("texels_per_unit")] && !options.atlas)
     throw Failure("--texels-per-unit is the density of a scene atlas: give --atlas too");
+  if(given[cut_options::option_index("stacking_tolerance")] && !options.atlas)
+    throw Failure("--stacking-tolerance shares texels between the meshes of a scene atlas: give --atlas too");
   // the options not given stay unset: the library's rules (the default box) decide
   cut_options::apply(given, options.method);
   const bool several = options.inputs.size() > 1 ||

@@ -131,7 +131,11 @@ int run_scene(const Options& options, const std::vector<std::string>& inputs, st
   {
     std::cout << "uv_unwrap: atlas of " << scene.parts.size() << " meshes on " << packing.pages
               << (packing.pages == 1 ? " page" : " pages") << ", " << packing.texels_per_unit
-              << " texels per unit\n";
+              << " texels per unit, " << packing.charts << " charts packed";
+    const auto stacked = std::count_if(scene.parts.begin(), scene.parts.end(),
+                                       [](const Scene_part& p) { return p.stacked_on >= 0; });
+    if(stacked > 0) std::cout << " (" << stacked << " meshes stacked on others: their texels shared)";
+    std::cout << "\n";
     for(std::size_t k = 0; k < packing.page.size(); ++k)
     {
       const Scene_page& p = packing.page[k];

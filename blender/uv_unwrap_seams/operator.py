@@ -53,6 +53,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         options = option_table.keywords(self)
         if not self.one_atlas:
             options.pop("texels_per_unit", None)  # a scene atlas's density
+            options.pop("stacking_tolerance", None)  # a scene atlas's sharing of texels
         if self.hide_seams:
             options["hide_seams"] = self.hide_seams
         return options
@@ -76,6 +77,7 @@ class UV_OT_unwrap_optimized_seams(bpy.types.Operator):
         layout.prop(self, "one_atlas")
         if self.one_atlas:
             layout.prop(self, "texels_per_unit")
+            option_table.draw_row(layout, self, option_table.BY_KEYWORD["stacking_tolerance"])
         layout.prop(self, "box")
         if self.box == 'TIGHT':
             layout.prop(self, "box_aspect")

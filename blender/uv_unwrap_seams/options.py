@@ -21,9 +21,9 @@ def _load():
 ROWS = _load()
 BY_KEYWORD = {row["python"]: row for row in ROWS}
 
-# starting values of the distortion bound and the hard edge angle, off by default (the others
+# starting values of the distortion bound, the hard edge angle and the stacking tolerance, off by default (the others
 # start at what the library uses when they are not given: "unset_value")
-_SUGGESTED = {"max_distortion": 4.2, "hard_edge_angle": 30.}
+_SUGGESTED = {"max_distortion": 4.2, "hard_edge_angle": 30., "stacking_tolerance": 1e-4}
 _INT_MAX = 2 ** 31 - 1
 
 
@@ -152,7 +152,8 @@ def cli_arguments(options):
 
 def advanced_rows():
     """The rows drawn in the panel's Advanced section (the others have their own place)."""
-    main = {"seam_cost", "max_distortion", "margin", "texture_size", "box_aspect", "preset", "texels_per_unit"}
+    main = {"seam_cost", "max_distortion", "margin", "texture_size", "box_aspect", "preset", "texels_per_unit",
+            "stacking_tolerance"}
     return [row for row in ROWS if row["blender"] not in main]
 
 

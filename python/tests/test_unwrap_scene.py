@@ -1,6 +1,7 @@
 """uv_unwrap.unwrap_scene(): several meshes in one atlas, measured on the UVs it returns (all meshes of a
 page together): UVs in [0,1], no flipped triangle, no texel covered twice, the same texel density for
-every mesh, pages when the density asked for does not fit one."""
+every mesh, pages when the density asked for does not fit one; with stacking_tolerance, rigid copies of a
+mesh take its texels (its UVs, not packed again) while a mirror image and a scaled copy get their own."""
 import numpy as np
 import pytest
 
@@ -93,3 +94,48 @@ def test_bad_scenes():
         uv_unwrap.unwrap_scene([(V, F)], seams=[None, None])
     with pytest.raises(ValueError, match="unwrap_scene"):
         uv_unwrap.unwrap(V, F, texels_per_unit=10.0)
+
+
+def rotation(k):
+    """A rotation (determinant +1) about an axis that changes with k."""
+    axis = np.array([1.0, 0.3 * k, -0.2 * k + 0.5])
+    axis /= np.linalg.norm(axis)
+    a = 0.7 * k + 0.2
+    K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + np.sin(a) * K + (1 - np.cos(a)) * K @ K
+
+
+def test_stacked_copies_share_the_texels_of_one():
+    V, F = spherical_cap(rings=8, segments=24)
+    copies = [(V @ rotation(k).T + [4.0 * k, 1.0, -2.0], F.copy()) for k in range(10)]
+    mirror = (V * [-1.0, 1.0, 1.0] + [0.0, 9.0, 0.0], F.copy())  # a mirror image: never a copy
+    larger = (1.5 * V + [0.0, -9.0, 0.0], F.copy())              # not rigid: its own texels
+    meshes = copies + [mirror, larger]
+    results = uv_unwrap.unwrap_scene(meshes, texture_size=256, padding=2, stacking_tolerance=1e-4)
+    atlas = results[0].stats["atlas"]
+    assert atlas["stacked_on"] == [None]
+    for r in results[1:10]:
+        assert r.stats["atlas"]["stacked_on"] == ["meshes[0]"]
+        assert np.array_equal(corner_uvs(r), corner_uvs(results[0]))  # the same texels
+        assert np.array_equal(r.seams, results[0].seams)
+        assert r.page == results[0].page
+    assert results[10].stats["atlas"]["stacked_on"] == [None] and results[11].stats["atlas"]["stacked_on"] == [None]
+    charts = [r.stats["charts"] for r in results]
+    assert atlas["charts_packed"] == charts[0] + charts[10] + charts[11]  # the copies' charts not packed again
+    # valid on the meshes with texels of their own; every mesh at the density
+    tpu = atlas["texels_per_unit"]
+    for (Vm, Fm), r in zip(meshes, results):
+        assert r.uv.min() >= 0 and r.uv.max() <= 1
+        assert (signed_areas(r) > 0).all()
+        assert 256 * np.sqrt(np.abs(signed_areas(r)).sum() / area_3d(Vm, Fm)) == pytest.approx(tpu, rel=0.01)
+    own = [corner_uvs(results[i]) for i in (0, 10, 11)]
+    assert doubly_covered(np.concatenate(own)) == 0
+    measures = atlas["page_measures"][0]
+    assert measures["flipped_faces"] == 0 and measures["border_crossings"] == 0 and measures["overlap_area"] == 0
+    # without the option every copy is packed: a lower density
+    plain = uv_unwrap.unwrap_scene(meshes, texture_size=256, padding=2)
+    assert plain[0].stats["atlas"]["charts_packed"] == sum(charts)
+    assert plain[0].stats["atlas"]["texels_per_unit"] < tpu
+    with pytest.raises(ValueError, match="unwrap_scene"):
+        uv_unwrap.unwrap(V, F, stacking_tolerance=1e-4)
+

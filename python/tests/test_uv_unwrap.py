@@ -317,3 +317,11 @@ def test_same_result_for_one_and_two_threads(cap):
     assert np.array_equal(one.faces_uv, two.faces_uv)
     assert np.array_equal(one.seams, two.seams)
     assert one.stats["distortion"] == two.stats["distortion"]
+
+
+def test_hard_edges_in_the_statistics():
+    V = np.array([[x, 2.0 * y, 3.0 * z] for z in (0, 1) for y in (0, 1) for x in (0, 1)])
+    F = np.array([[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
+                  [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]])
+    assert uv_unwrap.unwrap(V, F, hard_edge_angle=30.0).stats["hard_edges"] == 12  # the box's edges
+    assert uv_unwrap.unwrap(V, F).stats["hard_edges"] == 0

@@ -98,6 +98,12 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "Texture atlas",                                                                                                 \
     "scene atlas only (--atlas, unwrap_scene()): texels per unit of 3D length, the same for every mesh, pages "     \
     "added as needed; 0: the largest density at which all fit one page")                                            \
+  X(stacking_tolerance, REAL, "--stacking-tolerance", "stacking_tolerance", "stacking_tolerance", 0., false, 1., "",  \
+    "Texture atlas",                                                                                                 \
+    "scene atlas only (--atlas, unwrap_scene()): a mesh that a rotation and a translation (never a mirror) move "   \
+    "onto an earlier one of the same faces, within this fraction of its bounding box diagonal (e.g. 0.0001), "      \
+    "shares its texels: unwrapped once, packed once (default: every mesh its own texels; a glTF mesh used by "      \
+    "several nodes always has one set)")                                                                             \
   X(world_units, FLAG, "--world-units", "world_units", "world_units", 0., false, 1., "", "Texture atlas",           \
     "keep UVs in 3D units (charts still packed) instead of [0,1]")                                                   \
   X(bounding_box_aspect_ratio, RATIO, "--box", "box", "box_aspect", 0., true, unbounded, "", "Texture atlas",       \

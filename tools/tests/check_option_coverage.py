@@ -32,7 +32,6 @@ EXEMPT = {
     "number_of_rays": "face_visibility()'s, which the front ends run with its defaults (hide_seams)",
     "maximum_distance": "face_visibility()'s, which the front ends run with its defaults (hide_seams)",
     "instance_of": "pack_scene_atlas()'s instances (stacked parts), given by a scene front end, not a run's option",
-    "stacking_tolerance": "pack_scene_atlas()'s detection of stacked parts, not an option of a run",
     "uv_scale": "the metrics' (distortion_energy()), not an option of a run",
 }
 

@@ -196,8 +196,10 @@ Error_code find_stacked_meshes(const std::vector<const TriangleMesh*>& meshes, s
 /// scaled so that their total area equals its 3D area, then every chart is
 /// moved by a rotation and a translation and all by one common scale, the
 /// texels per unit of 3D length. Charts are packed by their shape (their
-/// rasters at the page's resolution, turned by multiples of 90°). All the
-/// charts of a mesh go to one page.
+/// rasters at the page's resolution, turned by multiples of 90°; at the
+/// largest density of a few hundred charts at most, also turned by free
+/// angles, kept where the density is larger). All the charts of a mesh go
+/// to one page.
 ///
 /// Stacked parts: a mesh that is an instance of another (`instance_of`) or
 /// found to be a copy of an earlier one (`stacking_tolerance`, see

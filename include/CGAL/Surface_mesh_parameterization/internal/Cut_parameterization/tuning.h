@@ -262,6 +262,24 @@ constexpr double shape_packing_margin = 1.01;
 constexpr int rectangle_packing_max_charts = 20000;
 /// above this many charts the raster placement (atlas/raster_placement.h) is not tried (time)
 constexpr int raster_placement_max_charts = 4000;
+/// scene atlas (atlas/scene_packing.h): up to this many charts the raster placement's scale is searched
+/// in several drop orders, bisected more finely, and with the charts' free orientations: each is a search
+/// of its own
+constexpr int raster_orders_max_charts = 200;
+/// ... and up to this padding in texels (the raster placement's marking grows with the padding)
+constexpr int raster_orders_max_padding = 16;
+/// ... in this many orders (atlas/shape_packing.h drop_order())
+constexpr int raster_placement_orders = 3;
+/// ... each bisected this many times
+constexpr int raster_placement_refinements = 6;
+/// free orientations (atlas/chart_orientation.h): the quarter turn is sampled in this many angles, once
+/// per entry, each a search of the raster placement (its outcome varies with the sampling, the best kept)
+constexpr int chart_turn_samples[] = {4, 5};
+/// ... a chart leaves its minimum-area frame only for an angle that claims at most this fraction of the
+/// texels the frame claims (rounding and ties never turn it)
+constexpr double chart_turn_gain = 0.97;
+/// ... the texels claimed are counted on a raster of this many texels along the chart's longer side
+constexpr double chart_turn_raster_texels = 48.;
 
 
 

@@ -1,18 +1,27 @@
-// Atlas packing: lays the charts of a UV map out in a square without overlap.
+// Atlas packing of one UV map: lays its charts out in a square without
+// overlap, in three stages, the layout of the largest scale kept.
 //
 // Each chart (connected component of the chart mesh) is moved by a rotation
 // and a translation only, then all charts get one common uniform scale (equal
 // texel density). A chart is first turned to its minimum-area bounding
-// rectangle (convex hull + rotating calipers; a lone chart is turned to the
-// rectangle of smallest larger side instead, which fills a square best). The
-// rectangles, inflated by the padding, are packed largest first by MaxRects
-// (best short side fit, 90° turns allowed) into a square. The padding is in
-// texels, a fixed fraction of the square whatever the scale, so the largest
-// common scale that packs is searched directly: from an area bound down in 5%
-// steps, then by bisection, each trial a full MaxRects packing (two orders:
-// by longer side, by area). About O(n²) for n charts, ~0.1 s for 2000.
-// Then the shape packing (shape_packing.h) searches a larger scale, above
-// the rectangles', at which the charts' rasters pack; it is kept if found.
+// rectangle (convex hull + rotating calipers; a lone chart to the rectangle
+// of smallest larger side instead, which fills a square best).
+// 1. Rectangles (this file): the rectangles, inflated by the padding, are
+//    packed largest first by MaxRects (best short side fit, 90° turns) into
+//    the square. The padding is in texels, a fixed fraction of the square
+//    whatever the scale, so the largest common scale that packs is searched
+//    directly (an area bound, then 5% steps down, then bisection), each trial
+//    a full packing in two orders (longer side, area): a scale that always
+//    packs, the floor of the next stages.
+// 2. Skyline (shape_packing.h): the charts' rasters dropped on a skyline,
+//    so that a chart can sit in the notch of another; searched above 1.
+// 3. Raster placement (raster_placement.h, driven by shape_packing.h): the
+//    rasters placed anywhere on a bit image of the page, holes under
+//    overhangs included; searched above 2 (up to
+//    tuning::raster_placement_max_charts charts: its cost grows faster),
+//    kept only if larger.
+// Every stage's guarantee (padding between charts, inside the square) is
+// exact, so whichever is kept the layout is valid.
 #ifndef CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_CHART_PACKING_H
 

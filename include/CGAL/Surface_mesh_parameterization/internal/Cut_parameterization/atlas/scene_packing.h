@@ -1,11 +1,14 @@
 // Scene atlas layout: the charts of several meshes, all at one texel density
 // (texels per unit of 3D length), on one or more square pages; every chart
 // of a mesh on the same page. Charts are shape-packed (shape_packing.h), by
-// the skyline and by the raster placement; the layout of larger density (or,
-// at a given density, of fewer pages) is kept.
+// the skyline and by the raster placement, and, for the largest density of
+// few charts, by the raster placement with the charts turned to free angles
+// (chart_orientation.h); the layout of larger density (or, at a given
+// density, of fewer pages) is kept.
 #ifndef CGAL_SMP_CUT_INTERNAL_SCENE_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_SCENE_PACKING_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_orientation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/shape_packing.h>
 
@@ -120,9 +123,15 @@ bool paginate(const std::vector<Scene_chart>& charts, int number_of_meshes, int 
 /// charts and to the sides. `texels_per_unit` > 0: that density, meshes on
 /// as many pages as needed (each mesh first-fit, largest total area first,
 /// on the first page that holds all its charts); else the largest density
-/// at which every chart fits one page. False if a mesh does not fit one
+/// at which every chart fits one page, where up to
+/// tuning::raster_orders_max_charts charts (and padding up to
+/// tuning::raster_orders_max_padding texels) may also be turned to free
+/// angles (least_claiming_turn(), each sampling of tuning::chart_turn_samples
+/// tried, kept only for a larger density). False if a mesh does not fit one
 /// page (or nothing fits).
-inline bool layout_scene(const std::vector<Scene_chart>& charts, int number_of_meshes, int texture_size,
+/// \post on success the layout is of the shapes left in `charts` (each
+///   turned by some angle about its frame where free angles won)
+inline bool layout_scene(std::vector<Scene_chart>& charts, int number_of_meshes, int texture_size,
                          double padding, double texels_per_unit, Scene_layout& layout)
 {
   const int n = texture_size;
@@ -141,9 +150,27 @@ inline bool layout_scene(const std::vector<Scene_chart>& charts, int number_of_m
     if(int(charts.size()) <= tuning::raster_placement_max_charts)
     {
       Scene_layout by_bits = layout;
-      by_bits.texels_per_unit = packing::largest_shape_scale<packing::Raster_page>(
-        shapes, n, pad, layout.texels_per_unit, high, by_bits.rasters, by_bits.placed);
+      by_bits.texels_per_unit =
+        packing::largest_raster_scale(shapes, n, pad, layout.texels_per_unit, high, by_bits.rasters, by_bits.placed);
       if(by_bits.texels_per_unit > layout.texels_per_unit) layout = by_bits; // found only above the skyline's
+    }
+    if(int(charts.size()) <= tuning::raster_orders_max_charts && pad <= tuning::raster_orders_max_padding)
+    {
+      std::vector<packing::Chart_shape> best_turned;
+      for(int samples : tuning::chart_turn_samples)
+      {
+        std::vector<packing::Chart_shape> turned;
+        for(const packing::Chart_shape& s : shapes) turned.push_back(packing::least_claiming_turn(s, samples));
+        Scene_layout by_angles = layout;
+        by_angles.texels_per_unit = packing::largest_raster_scale(turned, n, pad, layout.texels_per_unit, high,
+                                                                  by_angles.rasters, by_angles.placed);
+        if(by_angles.texels_per_unit > layout.texels_per_unit) // found only above the best so far
+        {
+          layout = by_angles;
+          best_turned.swap(turned);
+        }
+      }
+      for(std::size_t c = 0; c < best_turned.size(); ++c) charts[c].shape = best_turned[c];
     }
     layout.pages = 1;
     return layout.texels_per_unit > 0.;

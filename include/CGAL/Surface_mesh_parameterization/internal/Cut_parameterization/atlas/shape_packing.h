@@ -16,9 +16,10 @@
 // The scale is searched between a scale that is known to pack (the
 // rectangle packing's) and the area bound. The same search is then run with
 // the raster placement (raster_placement.h: charts anywhere on a bit image
-// of the page, holes under overhangs included), above the skyline's scale;
-// the larger scale is kept, so the raster placement can only raise the
-// coverage.
+// of the page, holes under overhangs included), above the skyline's scale
+// (for a scene atlas of few charts, in a few drop orders:
+// largest_raster_scale()); the larger scale is kept, so the raster
+// placement can only raise the coverage.
 #ifndef CGAL_SMP_CUT_INTERNAL_SHAPE_PACKING_H
 #define CGAL_SMP_CUT_INTERNAL_SHAPE_PACKING_H
 
@@ -172,19 +173,38 @@ double drop_rasters(const std::vector<Chart_raster>& rasters, const std::vector<
   return 1.;
 }
 
-/// Shape packing of `shapes` into an `n` × `n` texel square with `pad`
-/// texels of padding: the largest scale (texels per unit of the charts'
-/// frames) found in (`low`, `high`] at which all charts drop (down from
-/// `high` by tuning::shape_packing_step or more, then bisected), with their
-/// rasters and placements; 0 if none was found above `low`.
-template <typename Placer = Skyline>
-double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
-                                  std::vector<Chart_raster>& rasters, std::vector<Raster_placement>& placement)
+/// The order in which the charts of `shapes` are dropped, largest first by
+/// `key`: 0, the longer side of the frame, then the shorter; 1, the area of
+/// the frame's rectangle, then the longer side; 2, the shorter side, then
+/// the longer (ties: the index). The raster placement fills its holes
+/// differently in each order.
+/// \post a permutation of the indices of `shapes`
+inline std::vector<int> drop_order(const std::vector<Chart_shape>& shapes, int key)
 {
   std::vector<int> order(shapes.size());
   for(std::size_t c = 0; c < order.size(); ++c) order[c] = int(c);
-  auto key = [&](int c) { return std::make_pair(shapes[c].size.maxCoeff(), shapes[c].size.minCoeff()); };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) > key(b); });
+  auto value = [&](int c) {
+    const Vector2& s = shapes[c].size;
+    if(key == 1) return std::make_pair(s.x() * s.y(), s.maxCoeff());
+    if(key == 2) return std::make_pair(s.minCoeff(), s.maxCoeff());
+    return std::make_pair(s.maxCoeff(), s.minCoeff());
+  };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return value(a) > value(b); });
+  return order;
+}
+
+/// Shape packing of `shapes` into an `n` × `n` texel square with `pad`
+/// texels of padding: the largest scale (texels per unit of the charts'
+/// frames) found in (`low`, `high`] at which all charts drop in the order
+/// of `key` (drop_order(); down from `high` by tuning::shape_packing_step or
+/// more, then bisected `refinements` times), with their rasters and
+/// placements; 0 if none was found above `low`.
+template <typename Placer = Skyline>
+double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
+                           std::vector<Chart_raster>& rasters, std::vector<Raster_placement>& placement, int key = 0,
+                           int refinements = tuning::shape_packing_refinements)
+{
+  const std::vector<int> order = drop_order(shapes, key);
   double found = 0.;
   std::vector<Chart_raster> trial_rasters(shapes.size());
   std::vector<Raster_placement> trial;
@@ -223,12 +243,43 @@ double largest_shape_scale(const std::vector<Chart_shape>& shapes, int n, int pa
       texels *= (std::max)(0.5, (std::min)(tuning::shape_packing_step, fill));
     }
   }
-  for(int it = 0; it < tuning::shape_packing_refinements && found > 0. && fail > found; ++it)
+  for(int it = 0; it < refinements && found > 0. && fail > found; ++it)
   {
     const double mid = 0.5 * (found + fail);
     if(!attempt(mid)) fail = mid;
   }
   return found;
+}
+
+/// The raster placement's scale search: largest_shape_scale() with a
+/// Raster_page, in the first drop_order() only, or, up to
+/// tuning::raster_orders_max_charts charts and
+/// tuning::raster_orders_max_padding texels of padding (each order is a search),
+/// in each of the tuning::raster_placement_orders orders with
+/// tuning::raster_placement_refinements bisections, each order searched
+/// above the best scale so far. Returns the largest scale found in (`low`,
+/// `high`], with its rasters and placements; 0 if none.
+inline double largest_raster_scale(const std::vector<Chart_shape>& shapes, int n, int pad, double low, double high,
+                                   std::vector<Chart_raster>& rasters, std::vector<Raster_placement>& placement)
+{
+  const bool few = int(shapes.size()) <= tuning::raster_orders_max_charts && pad <= tuning::raster_orders_max_padding;
+  const int orders = few ? tuning::raster_placement_orders : 1;
+  const int refinements = few ? tuning::raster_placement_refinements : tuning::shape_packing_refinements;
+  double best = 0.;
+  std::vector<Chart_raster> trial_rasters;
+  std::vector<Raster_placement> trial;
+  for(int key = 0; key < orders; ++key)
+  {
+    const double found = largest_shape_scale<Raster_page>(shapes, n, pad, (std::max)(low, best), high, trial_rasters,
+                                                          trial, key, refinements);
+    if(found > best) // only above the best so far: an order never lowers it
+    {
+      best = found;
+      rasters.swap(trial_rasters);
+      placement.swap(trial);
+    }
+  }
+  return best;
 }
 
 /// The shape packing of the charts of `mesh` (turned to their frames:
@@ -268,6 +319,7 @@ inline double pack_shapes(const Chart_mesh& mesh, const std::vector<int>& chart_
   {
     std::vector<Chart_raster> raster_rasters;
     std::vector<Raster_placement> raster_at;
+    // one order (the scene atlas tries more): a mesh's own atlas keeps its time
     const double by_bits = largest_shape_scale<Raster_page>(shapes, n, pad, (std::max)(scale * n, texels), high,
                                                             raster_rasters, raster_at);
     if(by_bits > texels) // found only above the skyline's scale
