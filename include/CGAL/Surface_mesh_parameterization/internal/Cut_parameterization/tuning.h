@@ -195,6 +195,16 @@ constexpr double split_gain = 0.15;
 constexpr int split_rounds = 3;
 /// a vertex's bound on its gain, from its last judged decrease, with this margin (lazy judging)
 constexpr double lazy_judging_margin = 1.25;
+/// a hard-surface part (pipeline/plan.h, is_hard_surface()): at least this many sharp creases ...
+constexpr std::size_t hard_surface_min_creases = 500;
+/// ... and this fraction of the interior edges, ...
+constexpr double hard_surface_crease_fraction = 0.1;
+/// ... a crease's dihedral angle above this (degrees)
+constexpr double hard_surface_crease_degrees = 60.;
+/// its splits go in batches of this many (one per feature: hundreds of splits) ...
+constexpr int hard_surface_split_batch = 8;
+/// ... and up to this many per round (each round ends in a final solve under the barrier)
+constexpr int hard_surface_max_splits = 256;
 /// on a large mesh every trial solves the whole map: splits go in batches of one
 /// per multiresolution_faces faces, at most this many
 constexpr std::size_t split_batch_max = 16;
