@@ -165,6 +165,9 @@ constexpr int overlap_partition_faces = 10000;
 /// so is one whose Tutte map has an E_d above this (holes of a CAD part on one circle): the barrier's solve
 /// from it crawls, each step stopped where a border vertex meets a segment
 constexpr double tutte_restart_max_distortion = 1000.;
+/// no box's solve where a final solve cut the charts into more overlap-free pieces than this (CAD plates
+/// with dozens of holes: the box pushed each piece against its own border, then was dropped over its budget)
+constexpr int box_max_pieces = 32;
 /// after greedy splits on a cut mesh of at most this many faces, the split map is also solved in pieces
 constexpr int split_pieces_max_faces = 1000;
 /// Newton iterations at most of each solve of those pieces (their barrier converges slowly)
