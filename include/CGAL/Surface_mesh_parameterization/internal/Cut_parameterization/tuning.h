@@ -204,8 +204,9 @@ constexpr std::size_t hard_surface_min_creases = 500;
 constexpr double hard_surface_crease_fraction = 0.1;
 /// ... a crease's dihedral angle above this (degrees)
 constexpr double hard_surface_crease_degrees = 60.;
-/// its splits go in batches of this many (one per feature: hundreds of splits) ...
-constexpr int hard_surface_split_batch = 8;
+/// its splits go in batches of this many (one per feature: hundreds of splits; 8: the 48-tooth gear 4.3 s
+/// against 3.1 s, 16: no faster, longer seams) ...
+constexpr int hard_surface_split_batch = 12;
 /// ... and up to this many per round (each round ends in a final solve under the barrier)
 constexpr int hard_surface_max_splits = 256;
 /// on a large mesh every trial solves the whole map: splits go in batches of one
