@@ -56,6 +56,12 @@ class Border_barrier_term : public Energy_term
   // be held fat by the barrier
   std::vector<int> segment_apex_;
   std::vector<int> point_of_;                // per UV vertex: its index in points_, or -1
+  // per chart: its border vertices (indices in points_), its segments (indices in segments_) and
+  // those segments; pairs are within a chart only, so each chart gets a grid of its own (one grid
+  // over all charts was 90% of the solve of a plate cut into 206 pieces: the boxes of every chart
+  // in one grid, a swept box long against the whole atlas's cells tested against every box)
+  std::vector<std::vector<int>> chart_points_, chart_segment_ids_;
+  std::vector<std::vector<std::array<int, 2>>> chart_segments_;
   int number_of_charts_ = 0;
   double epsilon_ = 0.;                      // barrier distance where the border is not squashed
   double weight_ = 0.;                       // energy of one pair at distance ε/2
@@ -63,7 +69,9 @@ class Border_barrier_term : public Energy_term
   std::vector<double> point_epsilon_;        // ε of each border vertex, set by update()
 
   std::vector<std::array<int, 2>> pairs_;          // declared (vertex, segment) pairs
-  std::unordered_map<std::uint64_t, int> pair_of_; // key (vertex, segment) -> index in pairs_
+  // per border vertex (index in points_): its declared pairs as (segment, index in pairs_); a few per
+  // vertex, scanned (a hash map of the pairs was 7% of a CAD part's solve: looked up per close pair)
+  std::vector<std::vector<std::array<int, 2>>> pairs_of_point_;
   std::vector<int> elements_;                      // per declared pair
   std::vector<int> point_elements_;                // per border vertex: its 2x2 diagonal block
   int iterations_since_pattern_ = 0;
@@ -78,6 +86,23 @@ class Border_barrier_term : public Energy_term
   static constexpr int pattern_delay = tuning::barrier_pattern_delay;
 
   Vector2 point(const UV_vector& x, int v) const { return Vector2(x[2*v], x[2*v+1]); }
+
+  /// Index in pairs_ of the declared pair (border vertex v, segment j), or -1.
+  int declared_pair(int v, int j) const
+  {
+    for(const auto& p : pairs_of_point_[std::size_t(point_of_[v])])
+      if(p[0] == j) return p[1];
+    return -1;
+  }
+
+  /// Declares the pair (v, j) if it is not; true if it was not.
+  bool declare_pair(int v, int j)
+  {
+    if(declared_pair(v, j) >= 0) return false;
+    pairs_of_point_[std::size_t(point_of_[v])].push_back({j, int(pairs_.size())});
+    pairs_.push_back({v, j});
+    return true;
+  }
 
   /// Barrier distance of the pair (border vertex v, segment j).
   double epsilon(int v, int j) const { return (std::min)(point_epsilon_[point_of_[v]], segment_epsilon_[j]); }
@@ -111,14 +136,26 @@ class Border_barrier_term : public Energy_term
         }
       return box;
     };
-    std::vector<std::array<double, 4>> point_boxes(points_.size()), segment_boxes(segments_.size());
-    for(std::size_t i = 0; i < points_.size(); ++i) point_boxes[i] = box_of({points_[i]}, factor * point_epsilon_[i]);
-    for(std::size_t j = 0; j < segments_.size(); ++j) segment_boxes[j] = box_of({segments_[j][0], segments_[j][1]}, 0.);
-    for_each_overlapping_box_pair(point_boxes, segment_boxes, [&](int i, int j) {
-      const int v = points_[i];
-      const auto& seg = segments_[j];
-      if(point_chart_[i] == segment_chart_[j] && v != seg[0] && v != seg[1] && v != segment_apex_[j]) f(v, j);
-    });
+    std::vector<std::array<double, 4>> point_boxes, segment_boxes;
+    for(int c = 0; c < number_of_charts_; ++c)
+    {
+      const std::vector<int>& chart_points = chart_points_[std::size_t(c)];
+      const std::vector<int>& chart_segments = chart_segment_ids_[std::size_t(c)];
+      point_boxes.resize(chart_points.size());
+      segment_boxes.resize(chart_segments.size());
+      for(std::size_t i = 0; i < chart_points.size(); ++i)
+        point_boxes[i] = box_of({points_[std::size_t(chart_points[i])]}, factor * point_epsilon_[std::size_t(chart_points[i])]);
+      for(std::size_t j = 0; j < chart_segments.size(); ++j)
+      {
+        const auto& seg = segments_[std::size_t(chart_segments[j])];
+        segment_boxes[j] = box_of({seg[0], seg[1]}, 0.);
+      }
+      for_each_overlapping_box_pair(point_boxes, segment_boxes, [&](int i, int k) {
+        const int v = points_[std::size_t(chart_points[std::size_t(i)])], j = chart_segments[std::size_t(k)];
+        const auto& seg = segments_[std::size_t(j)];
+        if(v != seg[0] && v != seg[1] && v != segment_apex_[std::size_t(j)]) f(v, j);
+      });
+    }
   }
 
   /// Calls f(v, segment, d, ε, s, n) for each pair of for_each_candidate_pair()
@@ -173,6 +210,16 @@ public:
     epsilon_ = segments_.empty() ? 0. : relative_distance * epsilon_ / double(segments_.size());
     segment_epsilon_.assign(segments_.size(), 0.);
     point_epsilon_.assign(points_.size(), 0.);
+    pairs_of_point_.resize(points_.size());
+    chart_points_.resize(std::size_t(number_of_charts_));
+    chart_segment_ids_.resize(std::size_t(number_of_charts_));
+    chart_segments_.resize(std::size_t(number_of_charts_));
+    for(std::size_t i = 0; i < points_.size(); ++i) chart_points_[std::size_t(point_chart_[i])].push_back(int(i));
+    for(std::size_t j = 0; j < segments_.size(); ++j)
+    {
+      chart_segment_ids_[std::size_t(segment_chart_[j])].push_back(int(j));
+      chart_segments_[std::size_t(segment_chart_[j])].push_back(segments_[j]);
+    }
     weight_ = relative_weight * mesh.total_area() / double((std::max)(std::size_t(1), mesh.number_of_faces()));
   }
 
@@ -183,7 +230,9 @@ public:
   /// at x (cross, touch or overlap).
   bool has_crossing(const UV_vector& x) const
   {
-    return count_border_crossings(segments_, x, &segment_chart_, 1, true) > 0;
+    for(const auto& segments : chart_segments_) // a grid per chart (see chart_segments_)
+      if(count_border_crossings(segments, x, nullptr, 1, true) > 0) return true;
+    return false;
   }
 
   /// Per chart (ids of chart_of_faces()): true if its border meets itself
@@ -196,10 +245,8 @@ public:
   std::vector<char> charts_with_crossing(const UV_vector& x) const
   {
     std::vector<char> crossing(number_of_charts_, 0);
-    std::vector<std::vector<std::array<int, 2>>> segments(number_of_charts_);
-    for(std::size_t i = 0; i < segments_.size(); ++i) segments[segment_chart_[i]].push_back(segments_[i]);
     for(int c = 0; c < number_of_charts_; ++c)
-      crossing[c] = count_border_crossings(segments[c], x, nullptr, 1, true) > 0;
+      crossing[c] = count_border_crossings(chart_segments_[std::size_t(c)], x, nullptr, 1, true) > 0;
     for_each_candidate_pair(x, nullptr, 0., [&](int v, int j) {
       double s;
       Vector2 n;
@@ -248,22 +295,21 @@ public:
     std::size_t fresh = 0; // closer than ε, not declared
     for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double, const Vector2&) {
       found.push_back({v, j});
-      if(d < epsilon && !pair_of_.count(directed_edge_key(v, j))) ++fresh;
+      if(d < epsilon && declared_pair(v, j) < 0) ++fresh;
     }, 2.);
     if(fresh == 0 || (double(fresh) < pattern_growth * double(pairs_.size())
                       && iterations_since_pattern_ < pattern_delay))
       return changed ? Update::VALUES : Update::NONE;
     iterations_since_pattern_ = 0;
     std::size_t kept = 0;
-    for(const auto& pair : found) kept += pair_of_.count(directed_edge_key(pair[0], pair[1]));
+    for(const auto& pair : found) kept += declared_pair(pair[0], pair[1]) >= 0;
     const bool renew = 2 * kept < pairs_.size();
     if(renew)
     {
       pairs_.clear();
-      pair_of_.clear();
+      for(auto& p : pairs_of_point_) p.clear();
     }
-    for(const auto& pair : found)
-      if(pair_of_.emplace(directed_edge_key(pair[0], pair[1]), int(pairs_.size())).second) pairs_.push_back(pair);
+    for(const auto& pair : found) declare_pair(pair[0], pair[1]);
     return renew ? Update::ELEMENTS : Update::MORE_ELEMENTS;
   }
 
@@ -274,7 +320,7 @@ public:
   {
     std::size_t n = 0;
     for_each_close_pair(x, [&](int v, int j, double, double, double, const Vector2&) {
-      n += pair_of_.count(directed_edge_key(v, j)) == 0;
+      n += declared_pair(v, j) < 0;
     });
     return n;
   }
@@ -347,9 +393,9 @@ private:
       }
       if(hessian == nullptr) return;
       const Eigen::Matrix<double, 6, 6> block = ddb * g * g.transpose();
-      const auto it = pair_of_.find(directed_edge_key(v, j));
-      if(it != pair_of_.end())
-        hessian->add(elements_[it->second], block);
+      const int pair = declared_pair(v, j);
+      if(pair >= 0)
+        hessian->add(elements_[std::size_t(pair)], block);
       else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
         for(int c = 0; c < 3; ++c)
           hessian->add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));

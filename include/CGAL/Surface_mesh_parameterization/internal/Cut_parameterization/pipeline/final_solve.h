@@ -53,6 +53,8 @@ struct Final_solve_args
   bool global_injectivity = true;
   Box box;
   int overlap_partition_faces = tuning::overlap_partition_faces;
+  // no box's solve where the charts were cut into more overlap-free pieces than this (0: any number)
+  int box_max_pieces = tuning::box_max_pieces;
   int max_iterations = 500;
   Inner_solver solver = Inner_solver::NEWTON;
   double tolerance_factor = 1.; // the Newton tolerances below times this (Preset::FAST)
@@ -87,6 +89,7 @@ struct Unboxed_final_map
   bool barrier = false;   // the border barrier is on (it stays on)
   bool restart = false;   // a chart crossed itself and starts again from its Tutte map
                           // or a carried map (`distortion` is then that of an invalid map)
+  int pieces = 0;         // charts after a chart was cut into overlap-free pieces (0: none was)
 };
 
 /// Cuts the charts of `state` flagged in `charts` (ids of chart_of_faces())
@@ -237,6 +240,7 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
     if(std::find(cut_up.begin(), cut_up.end(), 1) != cut_up.end() && cut_into_overlap_free_pieces(surface, cut_up, state))
     {
       carried = nullptr; // its charts are those of the chart mesh before
+      chart_of_faces(state.chart, unboxed.pieces);
       crossing = Border_barrier_term(state.chart).charts_with_crossing(state.x);
       unboxed.barrier = unboxed.restart = true;
     }
@@ -251,11 +255,15 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
 /// again under the barrier without box, then the box's solve from the
 /// converged map (under the barrier with global injectivity). Where the box
 /// costs more than its budget (or takes E_d above its ceiling), it is
-/// weakened, then dropped: the map without box is the result.
+/// weakened, then dropped: the map without box is the result. No box where
+/// the final solve cut the charts into more than `args.box_max_pieces` pieces.
 inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_final_map& unboxed, Map_state& state,
                                   Work_log& log)
 {
-  double stiffness = args.box.final_stiffness();
+  // many pieces: the box pushes each against its own border, every step stopped at a contact, and
+  // ends weakened twice and dropped over its budget (plates with 8x6 and 12x10 holes)
+  const bool too_many_pieces = args.box_max_pieces > 0 && unboxed.pieces > args.box_max_pieces;
+  double stiffness = too_many_pieces ? 0. : args.box.final_stiffness();
   const bool barrier = unboxed.barrier || (stiffness > 0. && args.global_injectivity);
   auto solve = [&](double s) { return final_minimization(args, barrier, s, true, state, log); };
   Error_code status = OK;

@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progress.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/hard_edges.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_merging.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_straightening.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
@@ -99,6 +100,26 @@ bool cuts_on_coarse_copy(const Surface& surface, const Cut_parameterization_opti
   return o.number_of_passes > 0 && is_large(surface.number_of_faces(), o);
 }
 
+/// True if `surface` is a hard-surface (CAD-like) part: at least
+/// tuning::hard_surface_min_creases interior edges, and
+/// tuning::hard_surface_crease_fraction of them, are sharp creases (dihedral
+/// angle above tuning::hard_surface_crease_degrees). Each of its many features
+/// (a gear's teeth, a plate's holes) asks for splits of its own.
+template <typename Surface>
+bool is_hard_surface(const Surface& surface)
+{
+  std::size_t interior = 0, creases = 0;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int twin = surface.twin[std::size_t(fe)];
+    if(twin < fe) continue; // each interior edge once (a border one: twin -1)
+    ++interior;
+    creases += dihedral_angle_degrees(surface, fe) > tuning::hard_surface_crease_degrees;
+  }
+  return creases >= tuning::hard_surface_min_creases
+         && double(creases) >= tuning::hard_surface_crease_fraction * double(interior);
+}
+
 /// Greedy splits of `state` (solved, `state.distortion` its E_d) from
 /// `baseline` (its map relaxed without box) under `goal` (0: none): while a
 /// split pays for its seams (without a bound; down to `goal` if `to_target`),
@@ -153,6 +174,13 @@ Error_code split_where_distorted(const Surface& surface, const Cut_parameterizat
   if(large)
     split.batch = int((std::min)(tuning::split_batch_max,
                                  state.chart.number_of_faces() / std::size_t(o.multiresolution_faces)));
+  // a CAD part splits once per feature (hundreds of splits, each judged by a relaxation of its
+  // charts): splits in batches, and in one round (each round ends in a final solve under the barrier)
+  if(is_hard_surface(surface))
+  {
+    split.batch = (std::max)(split.batch, tuning::hard_surface_split_batch);
+    split.max_splits = (std::max)(split.max_splits, tuning::hard_surface_max_splits);
+  }
   const double goal = bounded ? run.bound : (large ? 0. : tuning::default_distortion_target);
   const bool to_target = !bounded && state.distortion <= tuning::low_poly_distortion;
   Final_solve_args pieces = final; // the pieces' solve: any chart that overlaps itself, fewer iterations
