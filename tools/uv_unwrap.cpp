@@ -418,6 +418,25 @@ void repair_primitive(const std::string& name, const gltf_io::Triangles& t, Mesh
   }
 }
 
+// In a scene atlas, a rigid copy of a mesh unwrapped before takes that
+// mesh's texels (given by the packing) instead of being unwrapped. Returns
+// the index of that mesh's part, -1 if the mesh was unwrapped.
+template <typename SeamMap, typename UVMap, typename VMap>
+int unwrap_or_stack(const Options& options, Scene* scene, Mesh& mesh, SeamMap seams, UVMap uvmap, VMap v_field,
+                     Run_summary& summary, const Mesh_source* source = nullptr)
+{
+  const int original = scene ? uv_unwrap::stacked_original(scene->parts, mesh, options.method.stacking_tolerance) : -1;
+  if(original < 0)
+  {
+    unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, source);
+    return original;
+  }
+  uv_unwrap::take_stacked_result(scene->parts[std::size_t(original)], summary);
+  if(!options.quiet)
+    std::cout << "  stacked on " << printable_text(scene->parts[std::size_t(original)].name) << std::endl;
+  return original;
+}
+
 // A glTF file: each triangle primitive unwrapped on its own (tools/gltf_io.h),
 // into its own atlas; the statistics add up the primitives (E_d weighted by
 // area, E_s from the summed seam length and area, as METHOD.md defines them).
@@ -486,15 +505,7 @@ void run_gltf(const Options& options, const std::string& input, const output_for
       if(!options.quiet)
         std::cout << "uv_unwrap: " << printable_text(input) << ", " << printable_text(name) << ": " << num_vertices(mesh) << " vertices, "
                   << num_faces(mesh) << " faces" << std::endl;
-      const int original = scene ? uv_unwrap::stacked_original(scene->parts, mesh, options.method.stacking_tolerance) : -1;
-      if(original >= 0) // a rigid copy: its original's texels, given by the packing
-      {
-        uv_unwrap::take_stacked_result(scene->parts[std::size_t(original)], part);
-        if(!options.quiet)
-          std::cout << "  stacked on " << printable_text(scene->parts[std::size_t(original)].name) << std::endl;
-      }
-      else
-        unwrap_mesh(options, mesh, seams, uvmap, v_field, part);
+      const int original = unwrap_or_stack(options, scene, mesh, seams, uvmap, v_field, part);
 
       // the UV of each corner: face i of the mesh is triangle i of the primitive
       // (with --atlas, once the scene is packed)
@@ -647,15 +658,7 @@ void run(const char* argv0, const Options& options, const std::string& input, Ru
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   auto v_field = mesh.add_property_map<face_descriptor, double>("f:v", 1.).first;
   const Mesh_source source{summary.input, &report};
-  const int original = scene ? uv_unwrap::stacked_original(scene->parts, mesh, options.method.stacking_tolerance) : -1;
-  if(original >= 0) // a rigid copy: its original's texels, given by the packing
-  {
-    uv_unwrap::take_stacked_result(scene->parts[std::size_t(original)], summary);
-    if(!options.quiet)
-      std::cout << "  stacked on " << printable_text(scene->parts[std::size_t(original)].name) << std::endl;
-  }
-  else
-    unwrap_mesh(options, mesh, seams, uvmap, v_field, summary, &source);
+  const int original = unwrap_or_stack(options, scene, mesh, seams, uvmap, v_field, summary, &source);
   if(options.uv_set > 0)
   {
     const std::string warning = std::string(format.name) + " has one set of texture coordinates: the UVs of --uv-set " +
