@@ -53,23 +53,10 @@ tinygltf::Primitive grid(tinygltf::Model& m, int n, float z0, int material)
       pos.insert(pos.end(), {x, y, z0 + 0.3f * std::sin(3.f * x) * std::cos(2.f * y)});
       nrm.insert(nrm.end(), {0.f, 0.f, 1.f});
     }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-    {
-      const auto a = std::uint16_t(j * (n + 1) + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + n + 1),
-                 d = std::uint16_t(c + 1);
-      idx.insert(idx.end(), {a, b, d, a, d, c});
-    }
-  tinygltf::Primitive p;
-  const std::size_t count = pos.size() / 3;
-  p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                          TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.attributes["NORMAL"] = add_accessor(m, nrm.data(), nrm.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                        TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                           TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  add_grid_triangles(idx, n, n);
+  tinygltf::Primitive p = triangle_primitive(m, pos, idx);
+  add_float_attribute(m, p, "NORMAL", nrm, TINYGLTF_TYPE_VEC3);
   p.material = material;
-  p.mode = TINYGLTF_MODE_TRIANGLES;
   return p;
 }
 
@@ -300,22 +287,10 @@ tinygltf::Model split_normal_grid()
         pos.insert(pos.end(), {float(2 * half + i), float(j), 0.f});
         nrm.insert(nrm.end(), {half ? 0.28f : 0.f, 0.f, half ? 0.96f : 1.f});
       }
-    for(int j = 0; j < 4; ++j)
-      for(int i = 0; i < 2; ++i)
-      {
-        const auto a = std::uint16_t(first + j * 3 + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + 3),
-                   d = std::uint16_t(c + 1);
-        idx.insert(idx.end(), {a, b, d, a, d, c});
-      }
+    add_grid_triangles(idx, 2, 4, first);
   }
-  tinygltf::Primitive p;
-  p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                          TINYGLTF_TYPE_VEC3, pos.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.attributes["NORMAL"] = add_accessor(m, nrm.data(), nrm.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                        TINYGLTF_TYPE_VEC3, nrm.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                           TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  p.mode = TINYGLTF_MODE_TRIANGLES;
+  tinygltf::Primitive p = triangle_primitive(m, pos, idx);
+  add_float_attribute(m, p, "NORMAL", nrm, TINYGLTF_TYPE_VEC3);
   tinygltf::Mesh mesh;
   mesh.primitives.push_back(p);
   m.meshes.push_back(mesh);

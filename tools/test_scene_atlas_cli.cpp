@@ -110,21 +110,9 @@ void write_grids_gltf(const fs::path& file, int count)
         pos.insert(pos.end(), {x, y, 3.f * k + 0.4f * size * std::sin(3.f * x / size) * std::cos(2.f * y / size)});
         tex.insert(tex.end(), {float(i) / n, float(j) / n});
       }
-    for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i)
-      {
-        const auto a = std::uint16_t(j * (n + 1) + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + n + 1),
-                   d = std::uint16_t(c + 1);
-        idx.insert(idx.end(), {a, b, d, a, d, c});
-      }
-    tinygltf::Primitive p;
-    p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                            TINYGLTF_TYPE_VEC3, pos.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
-    p.attributes["TEXCOORD_0"] = add_accessor(m, tex.data(), tex.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                              TINYGLTF_TYPE_VEC2, tex.size() / 2, TINYGLTF_TARGET_ARRAY_BUFFER);
-    p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                             TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    p.mode = TINYGLTF_MODE_TRIANGLES;
+    add_grid_triangles(idx, n, n);
+    tinygltf::Primitive p = triangle_primitive(m, pos, idx);
+    add_float_attribute(m, p, "TEXCOORD_0", tex, TINYGLTF_TYPE_VEC2);
     mesh.primitives.push_back(p);
   }
   m.meshes.push_back(mesh);
@@ -160,19 +148,8 @@ void write_instanced_gltf(const fs::path& file, int instances)
         const P3 p = moved({x, y, 0.3 * std::sin(4. * x) * std::cos(3. * y)}, 3 * copy);
         pos.insert(pos.end(), {float(p[0]), float(p[1]), float(p[2])});
       }
-    for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i)
-      {
-        const auto a = std::uint16_t(j * (n + 1) + i), b = std::uint16_t(a + 1), c = std::uint16_t(a + n + 1),
-                   d = std::uint16_t(c + 1);
-        idx.insert(idx.end(), {a, b, d, a, d, c});
-      }
-    tinygltf::Primitive p;
-    p.attributes["POSITION"] = add_accessor(m, pos.data(), pos.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                            TINYGLTF_TYPE_VEC3, pos.size() / 3, TINYGLTF_TARGET_ARRAY_BUFFER);
-    p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                             TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    p.mode = TINYGLTF_MODE_TRIANGLES;
+    add_grid_triangles(idx, n, n);
+    const tinygltf::Primitive p = triangle_primitive(m, pos, idx);
     tinygltf::Mesh mesh;
     mesh.primitives.push_back(p);
     m.meshes.push_back(mesh);

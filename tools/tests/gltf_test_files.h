@@ -58,6 +58,42 @@ inline int add_accessor(tinygltf::Model& m, const void* data, std::size_t bytes,
   return int(m.accessors.size()) - 1;
 }
 
+/// Appends the float attribute `values` (`type`: TINYGLTF_TYPE_VEC2 or
+/// TINYGLTF_TYPE_VEC3) to `p` as `name`.
+inline void add_float_attribute(tinygltf::Model& m, tinygltf::Primitive& p, const std::string& name,
+                                const std::vector<float>& values, int type)
+{
+  const std::size_t n = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  p.attributes[name] = add_accessor(m, values.data(), values.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT, type,
+                                    values.size() / n, TINYGLTF_TARGET_ARRAY_BUFFER);
+}
+
+/// A triangle-list primitive of float positions `pos` (x, y, z each) and
+/// 16-bit indices `idx`.
+inline tinygltf::Primitive triangle_primitive(tinygltf::Model& m, const std::vector<float>& pos,
+                                              const std::vector<std::uint16_t>& idx)
+{
+  tinygltf::Primitive p;
+  add_float_attribute(m, p, "POSITION", pos, TINYGLTF_TYPE_VEC3);
+  p.indices = add_accessor(m, idx.data(), idx.size() * 2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                           TINYGLTF_TYPE_SCALAR, idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  p.mode = TINYGLTF_MODE_TRIANGLES;
+  return p;
+}
+
+/// Appends two triangles per cell of a grid of `columns` × `rows` cells
+/// whose (columns + 1) × (rows + 1) vertices are numbered row by row from `first`.
+inline void add_grid_triangles(std::vector<std::uint16_t>& idx, int columns, int rows, int first = 0)
+{
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < columns; ++i)
+    {
+      const auto a = std::uint16_t(first + j * (columns + 1) + i), b = std::uint16_t(a + 1),
+                 c = std::uint16_t(a + columns + 1), d = std::uint16_t(c + 1);
+      idx.insert(idx.end(), {a, b, d, a, d, c});
+    }
+}
+
 /// The model of a .gltf or .glb file (a failure if it does not load).
 inline tinygltf::Model load_gltf(const std::filesystem::path& file)
 {
