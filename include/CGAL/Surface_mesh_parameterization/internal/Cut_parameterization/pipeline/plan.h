@@ -100,26 +100,6 @@ bool cuts_on_coarse_copy(const Surface& surface, const Cut_parameterization_opti
   return o.number_of_passes > 0 && is_large(surface.number_of_faces(), o);
 }
 
-/// True if `surface` is a hard-surface (CAD-like) part: at least
-/// tuning::hard_surface_min_creases interior edges, and
-/// tuning::hard_surface_crease_fraction of them, are sharp creases (dihedral
-/// angle above tuning::hard_surface_crease_degrees). Each of its many features
-/// (a gear's teeth, a plate's holes) asks for splits of its own.
-template <typename Surface>
-bool is_hard_surface(const Surface& surface)
-{
-  std::size_t interior = 0, creases = 0;
-  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
-  {
-    const int twin = surface.twin[std::size_t(fe)];
-    if(twin < fe) continue; // each interior edge once (a border one: twin -1)
-    ++interior;
-    creases += dihedral_angle_degrees(surface, fe) > tuning::hard_surface_crease_degrees;
-  }
-  return creases >= tuning::hard_surface_min_creases
-         && double(creases) >= tuning::hard_surface_crease_fraction * double(interior);
-}
-
 /// Greedy splits of `state` (solved, `state.distortion` its E_d) from
 /// `baseline` (its map relaxed without box) under `goal` (0: none): while a
 /// split pays for its seams (without a bound; down to `goal` if `to_target`),

@@ -3,12 +3,14 @@
 // 0 on a flat surface) exceeds a given angle are cut before anything else,
 // as given seams are, so that no chart crosses a crease: a lightmap's texel
 // must not straddle an edge where the lighting jumps. The cut search adds
-// its own cuts on top where the distortion asks for them.
+// its own cuts on top where the distortion asks for them. The same creases
+// tell a hard-surface (CAD-like) part, which the plan splits in batches.
 #ifndef CGAL_SMP_CUT_INTERNAL_HARD_EDGES_H
 #define CGAL_SMP_CUT_INTERNAL_HARD_EDGES_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/Cut_rules.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 
 #include <cmath>
 #include <cstddef>
@@ -55,6 +57,26 @@ std::size_t cut_hard_edges(const Surface& surface, double degrees, const Cut_rul
     ++added;
   }
   return added;
+}
+
+/// True if `surface` is a hard-surface (CAD-like) part: at least
+/// tuning::hard_surface_min_creases interior edges, and
+/// tuning::hard_surface_crease_fraction of them, are sharp creases (dihedral
+/// angle above tuning::hard_surface_crease_degrees). Each of its many features
+/// (a gear's teeth, a plate's holes) asks for splits of its own.
+template <typename Surface>
+bool is_hard_surface(const Surface& surface)
+{
+  std::size_t interior = 0, creases = 0;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+  {
+    const int twin = surface.twin[std::size_t(fe)];
+    if(twin < fe) continue; // each interior edge once (a border one: twin -1)
+    ++interior;
+    creases += dihedral_angle_degrees(surface, fe) > tuning::hard_surface_crease_degrees;
+  }
+  return creases >= tuning::hard_surface_min_creases
+         && double(creases) >= tuning::hard_surface_crease_fraction * double(interior);
 }
 
 } // namespace cut
