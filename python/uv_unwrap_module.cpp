@@ -413,6 +413,8 @@ std::vector<Result> unwrap_scene(const py::object& meshes_object, CUT_PARAM_OPTI
     s.border_crossings = SMP::number_of_border_crossings(mesh, parts[i].uvmap);
     s.overlap_area = SMP::uv_overlap_area(mesh, parts[i].uvmap);
     s.result.uv_coverage = SMP::uv_area(mesh, parts[i].uvmap);
+    s.result.number_of_charts += parts[i].added_charts; // cut for packing
+    s.result.seam_length += parts[i].added_seam_length;
     s.result.uv_scale = packing.texels_per_unit / options.method.texture_size;
     s.uv_in_unit_square = packing.page[std::size_t(parts[i].page)].uv_in_unit_square;
     results.push_back(result_of(unwrapped[i], arrays[i]));

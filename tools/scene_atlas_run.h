@@ -41,6 +41,8 @@ struct Scene_part
   int page = -1;                    // set by pack_scene()
   int stacked_on = -1;              // the earlier part whose texels it shares (stacked_original()); -1: its own
   SMP::Cut_and_parameterize_result result; // its unwrapping's (its original's for a stacked copy)
+  std::size_t added_charts = 0;     // set by pack_scene(): charts added by cutting for packing
+  double added_seam_length = 0.;    // ... and the 3D length of their seams
 };
 
 /// The parts of all the inputs, and the writer of each input (called once
@@ -146,7 +148,8 @@ inline Scene_packing pack_scene(std::vector<Scene_part>& parts, const SMP::Cut_p
     meshes, P::texture_size(options.texture_size,
             P::padding(options.padding,
             P::texels_per_unit(options.texels_per_unit,
-            P::instance_of(instance_of)))));
+            P::instance_of(instance_of,
+            P::split_charts_for_packing(options.split_charts_for_packing))))));
   if(r.error != SMP::OK)
     throw Failure(std::string("packing the scene atlas failed: ") + SMP::error_message(r.error) + " (" +
                     SMP::error_name(r.error) + ")" +
@@ -159,7 +162,12 @@ inline Scene_packing pack_scene(std::vector<Scene_part>& parts, const SMP::Cut_p
   packing.pages = r.number_of_pages;
   packing.texels_per_unit = r.texels_per_unit;
   packing.charts = r.number_of_charts;
-  for(std::size_t m = 0; m < parts.size(); ++m) parts[m].page = r.page[m];
+  for(std::size_t m = 0; m < parts.size(); ++m)
+  {
+    parts[m].page = r.page[m];
+    parts[m].added_charts = r.added_charts[m]; // the cuts of split_charts_for_packing
+    parts[m].added_seam_length = r.added_seam_length[m];
+  }
   for(int page = 0; page < r.number_of_pages; ++page)
   {
     Scene_page s;
@@ -206,6 +214,12 @@ inline nlohmann::ordered_json atlas_statistics(const std::vector<Scene_part>& pa
   j["page_count"] = packing.pages;
   j["texels_per_unit"] = number(packing.texels_per_unit);
   j["charts_packed"] = packing.charts;
+  std::size_t added_charts = 0;
+  double added_seam_length = 0.;
+  for(const Scene_part& p : parts)
+    if(p.input == input) { added_charts += p.added_charts; added_seam_length += p.added_seam_length; }
+  j["charts_added_for_packing"] = added_charts; // split_charts_for_packing's cuts, counted in the input's
+  j["seam_length_added_for_packing"] = number(added_seam_length); // number_of_charts and seam_length
   j["page_measures"] = nlohmann::ordered_json::array();
   for(std::size_t k = 0; k < packing.page.size(); ++k)
   {

@@ -98,6 +98,8 @@ int run_scene(const Options& options, const std::vector<std::string>& inputs, st
           s.border_crossings += SMP::number_of_border_crossings(*p.mesh, p.uvmap);
           s.overlap_area += SMP::uv_overlap_area(*p.mesh, p.uvmap);
           s.result.uv_coverage += SMP::uv_area(*p.mesh, p.uvmap);
+          s.result.number_of_charts += p.added_charts; // cut for packing
+          s.result.seam_length += p.added_seam_length;
           s.uv_in_unit_square = s.uv_in_unit_square && packing.page[std::size_t(p.page)].uv_in_unit_square;
         }
       s.result.uv_scale = packing.texels_per_unit / options.method.texture_size; // UV units per unit of length

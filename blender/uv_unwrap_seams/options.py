@@ -21,9 +21,11 @@ def _load():
 ROWS = _load()
 BY_KEYWORD = {row["python"]: row for row in ROWS}
 
-# starting values of the distortion bound, the hard edge angle and the stacking tolerance, off by default (the others
-# start at what the library uses when they are not given: "unset_value")
-_SUGGESTED = {"max_distortion": 4.2, "hard_edge_angle": 30., "stacking_tolerance": 1e-4}
+# starting values of the distortion bound, the hard edge angle, the stacking tolerance and the fill below which charts
+# are cut for packing, off by default (the others start at what the library uses when they are not given:
+# "unset_value")
+_SUGGESTED = {"max_distortion": 4.2, "hard_edge_angle": 30., "stacking_tolerance": 1e-4,
+              "split_charts_for_packing": 0.5}
 _INT_MAX = 2 ** 31 - 1
 
 

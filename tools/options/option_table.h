@@ -104,6 +104,11 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "onto an earlier one of the same faces, within this fraction of its bounding box diagonal (e.g. 0.0001), "      \
     "shares its texels: unwrapped once, packed once (default: every mesh its own texels; a glTF mesh used by "      \
     "several nodes always has one set)")                                                                             \
+  X(split_charts_for_packing, REAL, "--split-charts-for-packing", "split_charts_for_packing",                       \
+    "split_charts_for_packing", 0., true, 1., "", "Texture atlas",                                                   \
+    "cut every chart that fills less than this fraction of its smallest bounding rectangle (e.g. 0.5) into pieces " \
+    "that fill more before packing, by straight cuts across it, short ones preferred: more charts and seams, "      \
+    "UVs, distortion and guarantees unchanged, a fuller atlas (default: charts never cut for packing)")            \
   X(world_units, FLAG, "--world-units", "world_units", "world_units", 0., false, 1., "", "Texture atlas",           \
     "keep UVs in 3D units (charts still packed) instead of [0,1]")                                                   \
   X(bounding_box_aspect_ratio, RATIO, "--box", "box", "box_aspect", 0., true, unbounded, "", "Texture atlas",       \

@@ -136,6 +136,10 @@ CGAL_SMP_CUT_NAMED_PARAMETER(instance_of_t, instance_of)
 /// Scene atlas (pack_scene_atlas()): given, meshes equal to an earlier one up to a rigid motion, within this
 /// distance relative to its bounding box diagonal, share its texels (double >= 0; default: no detection).
 CGAL_SMP_CUT_NAMED_PARAMETER(stacking_tolerance_t, stacking_tolerance)
+/// Atlas (cut_and_parameterize(), pack_scene_atlas()): given, a chart filling less than this fraction of its
+/// minimum-area bounding rectangle is cut into pieces that fill more before packing (double in (0, 1];
+/// default: charts never cut for packing).
+CGAL_SMP_CUT_NAMED_PARAMETER(split_charts_for_packing_t, split_charts_for_packing)
 
 /// Metrics: UV length per 3D length of the map measured (e.g. `uv_scale` of a
 /// packed atlas); the UVs are divided by it (double, default 1).

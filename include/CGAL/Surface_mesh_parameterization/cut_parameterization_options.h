@@ -72,6 +72,9 @@ struct Cut_parameterization_options
   double padding = 2.;                    ///< gap between charts, in texels
   double texels_per_unit = 0.;            ///< pack_scene_atlas() only: texels per unit of 3D length, 0: the most that fit
   std::optional<double> stacking_tolerance; ///< pack_scene_atlas() only: rigid copies share texels within this; unset: none
+  /// a chart filling less than this fraction of its minimum-area bounding rectangle is cut into pieces
+  /// that fill more before packing (new seams); unset: never
+  std::optional<double> split_charts_for_packing;
   bool world_units = false;               ///< keep the 3D scale instead of filling the unit square
   std::optional<double> bounding_box_aspect_ratio;      ///< unset: 1, a square
   std::optional<double> bounding_box_stiffness;         ///< unset: see bounding_box_stiffness_value()
@@ -180,7 +183,7 @@ void read_named_parameter(const NamedParameters& np, Tag tag, Field& field)
 ///       `minimum_relative_cut_length`, `number_of_iterations`, `multiresolution_faces`,
 ///       `inner_solver`, `preset`, `reject_degenerate_faces`, `weld_colocal_vertices`, `hard_edge_angle`, `global_injectivity`,
 ///       `texture_size`,
-///       `padding`, `texels_per_unit`, `stacking_tolerance`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
+///       `padding`, `texels_per_unit`, `stacking_tolerance`, `split_charts_for_packing`, `world_units`, `bounding_box_aspect_ratio`, `bounding_box_stiffness`,
 ///       `bounding_box_distortion_budget`, `progress_callback` (their types and ranges are in
 ///       the table of `cut_and_parameterize()`)}
 ///     \cgalParamType{`double`}
@@ -235,6 +238,7 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
   read_named_parameter(np, internal_np::padding, o.padding);
   read_named_parameter(np, internal_np::texels_per_unit, o.texels_per_unit);
   read_named_parameter(np, internal_np::stacking_tolerance, o.stacking_tolerance);
+  read_named_parameter(np, internal_np::split_charts_for_packing, o.split_charts_for_packing);
   read_named_parameter(np, internal_np::world_units, o.world_units);
   read_named_parameter(np, internal_np::bounding_box_aspect_ratio, o.bounding_box_aspect_ratio);
   read_named_parameter(np, internal_np::bounding_box_stiffness, o.bounding_box_stiffness);

@@ -4,6 +4,7 @@
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/packing_split.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/scene_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/stacked_meshes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
@@ -54,17 +55,36 @@ struct Scene_atlas_result
   /// per mesh, the mesh whose texels it shares (`instance_of`, `stacking_tolerance`); itself if none
   std::vector<int> stacked_on;
   std::size_t number_of_charts = 0; ///< charts packed (those of the stacked copies not counted)
+  /// per mesh, the charts added by `split_charts_for_packing` (0 without it; a stacked copy's: its original's)
+  std::vector<std::size_t> added_charts;
+  /// per mesh, the length of the seams added by `split_charts_for_packing` (0 without it), in the unit of
+  /// `Cut_and_parameterize_result::seam_length` (3D length over the radius of the disk of the mesh's area)
+  std::vector<double> added_seam_length;
 };
 
 namespace internal {
 namespace cut {
 
-/// Charts (faces joined across edges that are neither seams nor borders)
-/// of one mesh, as scene charts at 3D scale; `face_chart` and the frame
-/// corners of each face are kept to write the UVs back. False if a UV is not
-/// finite or the UV area is zero.
-template <typename Surface, typename SeamEdgeMap, typename HalfedgeUVMap>
-bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const HalfedgeUVMap& uvmap, int mesh,
+/// UV of every corner 3f+k of `surface`; false if one is not finite.
+template <typename Surface, typename HalfedgeUVMap>
+bool read_corner_uvs(const Surface& surface, const HalfedgeUVMap& uvmap, std::vector<Vector2>& uv)
+{
+  uv.resize(3 * surface.number_of_faces());
+  for(std::size_t c = 0; c < uv.size(); ++c)
+  {
+    const auto p = get(uvmap, surface.corner_halfedge[c / 3][c % 3]);
+    uv[c] = Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    if(!uv[c].allFinite()) return false;
+  }
+  return true;
+}
+
+/// Charts (faces joined across edges that are neither seams, flagged in
+/// `seams` per edge, nor borders) of one mesh, as scene charts at 3D scale;
+/// `face_chart` and the frame corners of each face are kept to write the
+/// UVs back. False if a UV is not finite or the UV area is zero.
+template <typename Surface, typename HalfedgeUVMap>
+bool read_scene_charts(const Surface& surface, const std::vector<char>& seams, const HalfedgeUVMap& uvmap, int mesh,
                        std::vector<Scene_chart>& charts, std::vector<int>& face_chart)
 {
   const std::size_t nf = surface.number_of_faces();
@@ -72,7 +92,7 @@ bool read_scene_charts(const Surface& surface, const SeamEdgeMap& seams, const H
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int f) { while(parent[f] != f) f = parent[f] = parent[parent[f]]; return f; };
   for(int fe = 0; fe < int(3 * nf); ++fe)
-    if(surface.twin[fe] >= 0 && !get(seams, surface.edges[surface.edge_of[fe]]))
+    if(surface.twin[fe] >= 0 && !seams[std::size_t(surface.edge_of[fe])])
       parent[find(fe / 3)] = find(surface.twin[fe] / 3);
   std::vector<std::array<Vector2, 3>> uv(nf);
   double area_3d = 0., area_uv = 0.;
@@ -251,6 +271,17 @@ Error_code find_stacked_meshes(const std::vector<const TriangleMesh*>& meshes, s
 ///     \cgalParamType{`double`, ≥ 0 and finite (e.g. `1e-4`)}
 ///     \cgalParamDefault{no detection}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{split_charts_for_packing}
+///     \cgalParamDescription{given, every chart whose UV area is less than this fraction of the area
+///       of its minimum-area bounding rectangle is cut, before packing, by straight lines across it
+///       (recursive bisection along its rectangle's or principal axes, the cut that lowers the
+///       pieces' rectangle area most net of a cost for its length and for each piece) into pieces
+///       that fill more: each piece keeps the chart's UVs (no flip, no overlap, E_d unchanged), the
+///       cuts are written as seams (interior edges; `SeamEdgeMap` must then be writable to get
+///       them); the result's `added_charts` and `added_seam_length` (E_s added) report them}
+///     \cgalParamType{`double`, in (0, 1] (e.g. `0.5`)}
+///     \cgalParamDefault{charts never cut}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \return `error` `OK`, or `ERROR_EMPTY_MESH` (no mesh or a mesh without
@@ -295,6 +326,9 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
   if(stacking_tolerance && (!(*stacking_tolerance >= 0.) || !std::isfinite(*stacking_tolerance)))
   { result.error = ERROR_WRONG_PARAMETER; return result; }
   const std::vector<int> instance_of = choose_parameter(get_parameter(np, internal_np::instance_of), std::vector<int>());
+  std::optional<double> split_fill;
+  ic::read_named_parameter(np, internal_np::split_charts_for_packing, split_fill);
+  if(split_fill && !(*split_fill > 0. && *split_fill <= 1.)) { result.error = ERROR_WRONG_PARAMETER; return result; }
 
   std::vector<Surface> surfaces(meshes.size());
   std::vector<std::vector<int>> face_chart(meshes.size());
@@ -309,10 +343,27 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
   std::vector<int> original; // per mesh, the mesh whose texels it shares
   if(!ic::stacked_originals(surfaces, instance_of, stacking_tolerance, original))
   { result.error = ERROR_WRONG_PARAMETER; return result; }
+  std::vector<std::vector<char>> added_seams(meshes.size());
+  result.added_charts.assign(meshes.size(), 0);
+  result.added_seam_length.assign(meshes.size(), 0.);
   for(std::size_t m = 0; m < meshes.size(); ++m)
   {
     if(original[m] != int(m)) continue; // a copy: its charts are its original's
-    if(!ic::read_scene_charts(surfaces[m], meshes[m].seam_edge_map, meshes[m].uvmap, int(m), charts, face_chart[m]))
+    const Surface& s = surfaces[m];
+    std::vector<char> seams(s.edges.size());
+    for(std::size_t e = 0; e < s.edges.size(); ++e) seams[e] = get(meshes[m].seam_edge_map, s.edges[e]) ? 1 : 0;
+    if(split_fill)
+    {
+      std::vector<ic::Vector2> uv;
+      if(!ic::read_corner_uvs(s, meshes[m].uvmap, uv)) { result.error = ERROR_WRONG_PARAMETER; return result; }
+      added_seams[m] = ic::packing::packing_cuts(s, seams, {}, uv, *split_fill, result.added_charts[m]);
+      double area = 0.; // E_s's unit: the radius of the disk of the mesh's area
+      for(const auto& cv : s.corner_vertex)
+        area += 0.5 * (s.points[cv[1]] - s.points[cv[0]]).cross(s.points[cv[2]] - s.points[cv[0]]).norm();
+      result.added_seam_length[m] = area > 0. ? ic::packing::flagged_length(s, added_seams[m]) / std::sqrt(area / M_PI) : 0.;
+      for(std::size_t e = 0; e < s.edges.size(); ++e) seams[e] |= added_seams[m][e];
+    }
+    if(!ic::read_scene_charts(s, seams, meshes[m].uvmap, int(m), charts, face_chart[m]))
     { result.error = ERROR_WRONG_PARAMETER; return result; }
   }
   ic::Scene_layout layout;
@@ -341,6 +392,10 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
       put(meshes[m].uvmap, s.corner_halfedge[fe / 3][fe % 3], uv[fe]);
       if(s.twin[fe] < 0) put(meshes[m].uvmap, opposite(s.face_edge_halfedge(int(fe)), *meshes[m].mesh), uv[fe]);
     }
+    if constexpr(!std::is_same_v<typename boost::property_traits<decltype(meshes[m].seam_edge_map)>::category,
+                                 boost::readable_property_map_tag>)
+      for(std::size_t e = 0; e < added_seams[m].size(); ++e)
+        if(added_seams[m][e]) put(meshes[m].seam_edge_map, s.edges[e], true);
   }
   for(std::size_t m = 0; m < meshes.size(); ++m)
     if(original[m] != int(m))
@@ -348,6 +403,8 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
       ic::copy_stacked_outputs(surfaces[std::size_t(original[m])], meshes[std::size_t(original[m])], surfaces[m],
                                meshes[m]);
       layout.page_of_mesh[m] = layout.page_of_mesh[std::size_t(original[m])];
+      result.added_charts[m] = result.added_charts[std::size_t(original[m])];
+      result.added_seam_length[m] = result.added_seam_length[std::size_t(original[m])];
     }
   result.number_of_pages = layout.pages;
   result.texels_per_unit = layout.texels_per_unit;

@@ -294,6 +294,20 @@ constexpr int chart_turn_samples[] = {4, 5};
 constexpr double chart_turn_gain = 0.97;
 /// ... the texels claimed are counted on a raster of this many texels along the chart's longer side
 constexpr double chart_turn_raster_texels = 48.;
+/// charts cut for packing (atlas/packing_split.h, option split_charts_for_packing): straight cut lines
+/// tried per direction (at these many area quantiles strictly inside the piece)
+constexpr int packing_split_positions = 11;
+/// ... a piece of fewer faces is not cut, and a side of a cut with fewer faces joins the other side
+constexpr int packing_split_min_faces = 24;
+/// ... a cut is kept if it lowers the pieces' bounding-rectangle area by more than this fraction, net of
+/// its seam cost ...
+constexpr double packing_split_min_gain = 0.02;
+/// ... which is this many times the cut's UV length over the square root of the piece's rectangle area
+constexpr double packing_split_seam_weight = 0.05;
+/// ... plus this much per piece added (each costs its padding)
+constexpr double packing_split_piece_cost = 0.01;
+/// ... and a chart is cut into at most this many pieces
+constexpr int packing_split_max_pieces = 32;
 
 
 

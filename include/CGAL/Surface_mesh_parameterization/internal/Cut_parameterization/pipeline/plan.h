@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/Scoped_timer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/carried_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/packing_split.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/greedy_splits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/Map_state.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/alternation.h>
@@ -65,7 +66,8 @@ inline bool valid_options(const Cut_parameterization_options& o)
       && aspect >= 0. && std::isfinite(aspect) && stiffness >= 0. && std::isfinite(stiffness)
       && o.bounding_box_distortion_budget_value() >= 0. && o.multiresolution_faces >= 0
       && (o.distortion_bound == 0. || (o.distortion_bound >= 4. && std::isfinite(o.distortion_bound)))
-      && o.texture_size >= 1 && o.padding >= 0. && std::isfinite(o.padding);
+      && o.texture_size >= 1 && o.padding >= 0. && std::isfinite(o.padding)
+      && (!o.split_charts_for_packing || (*o.split_charts_for_packing > 0. && *o.split_charts_for_packing <= 1.));
 }
 
 /// The default run's arguments: the user's λ and box, no bound.
@@ -297,12 +299,15 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   return split_where_distorted(surface, o, progress, run, final, state, log);
 }
 
-/// Packs the charts of the solved cut mesh in `state` and checks the result
+/// Packs the charts of the solved cut mesh in `state` (cut first for packing
+/// where the options ask) and checks the result
 /// (finite, no flipped face, no forbidden edge cut).
-inline Error_code finish_atlas(const Cut_parameterization_options& o, const Progress& progress, Map_state& state,
-                               Work_log& log, Packing_result& packing)
+template <typename Surface>
+Error_code finish_atlas(const Surface& surface, const Cut_parameterization_options& o, const Progress& progress,
+                        Map_state& state, Work_log& log, Packing_result& packing)
 {
   Scoped_timer packing_timer(log.timings.packing);
+  if(o.split_charts_for_packing) packing::cut_charts_for_packing(surface, *o.split_charts_for_packing, state);
   packing = pack_charts(state.chart, state.x, Packing_settings{o.texture_size, o.padding, o.world_units});
   packing_timer.stop();
   // never hand out a silently wrong map (checked in every build type)
@@ -443,7 +448,7 @@ Error_code default_target_run(const Surface& surface, const std::vector<double>&
   Map_state input;
   if(may_search) input = state; // the search starts where the first run did
   Error_code status = optimize_cut_mesh(surface, face_lambda, o, progress, run, state, log);
-  if(status == OK) status = finish_atlas(o, progress, state, log, packing);
+  if(status == OK) status = finish_atlas(surface, o, progress, state, log, packing);
   if(!may_search || status != OK || !(state.distortion > tuning::default_distortion_target)) return status;
   Map_state search = std::move(input);
   Work_log search_log;
@@ -451,7 +456,7 @@ Error_code default_target_run(const Surface& surface, const std::vector<double>&
   bool met = false;
   status = bounded_run(surface, face_lambda, o, progress, run, tuning::default_distortion_target, search, search_log,
                        met);
-  if(status == OK) status = finish_atlas(o, progress, search, search_log, search_packing);
+  if(status == OK) status = finish_atlas(surface, o, progress, search, search_log, search_packing);
   if(status == ERROR_CANCELED) return status;
   log.add(search_log);
   if(status == OK && met)
@@ -477,7 +482,7 @@ Error_code run_plan(const Surface& surface, const std::vector<double>& face_lamb
   if(!(o.distortion_bound > 0.)) return default_target_run(surface, face_lambda, o, progress, run, state, log, packing);
   const Error_code status = bounded_run(surface, face_lambda, o, progress, run, o.distortion_bound, state, log,
                                         bound_met);
-  return status != OK ? status : finish_atlas(o, progress, state, log, packing);
+  return status != OK ? status : finish_atlas(surface, o, progress, state, log, packing);
 }
 
 } // namespace cut
