@@ -246,6 +246,18 @@ namespace Surface_mesh_parameterization {
 ///     \cgalParamType{`double`, ≥ 0 and finite}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{split_charts_for_packing}
+///     \cgalParamDescription{given, after the parameterization and before packing, every chart
+///       whose UV area is less than this fraction of the area of its minimum-area bounding
+///       rectangle is cut by straight lines across it (recursive bisection along the rectangle's
+///       and the principal axes; the cut that lowers the pieces' rectangle area most, net of a
+///       cost for its length and for each piece; forbidden edges never cut) into pieces that
+///       fill more. Each piece keeps its UVs (no flip, no overlap, E_d unchanged); the cuts are
+///       seams (interior edges), counted in `number_of_charts` and `seam_length`. Where a
+///       piece would not be a topological disk, no chart is cut}
+///     \cgalParamType{`double`, in (0, 1] (e.g. `0.6`)}
+///     \cgalParamDefault{charts never cut for packing}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{world_units}
 ///     \cgalParamDescription{`true`: keep the 3D scale (`uv_scale` 1, charts still packed
 ///       apart) instead of scaling the atlas into the unit square}
