@@ -360,7 +360,8 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
       double area = 0.; // E_s's unit: the radius of the disk of the mesh's area
       for(const auto& cv : s.corner_vertex)
         area += 0.5 * (s.points[cv[1]] - s.points[cv[0]]).cross(s.points[cv[2]] - s.points[cv[0]]).norm();
-      result.added_seam_length[m] = area > 0. ? ic::packing::flagged_length(s, added_seams[m]) / std::sqrt(area / M_PI) : 0.;
+      result.added_seam_length[m] =
+        area > 0. ? ic::packing::flagged_length(s, added_seams[m]) / std::sqrt(area / M_PI) : 0.;
       for(std::size_t e = 0; e < s.edges.size(); ++e) seams[e] |= added_seams[m][e];
     }
     if(!ic::read_scene_charts(s, seams, meshes[m].uvmap, int(m), charts, face_chart[m]))

@@ -29,7 +29,8 @@ namespace packing {
 
 /// Area of the minimum-area bounding rectangle of the UV triangles of
 /// `faces` (`corner_uv`: per corner 3f+k), and its angle.
-inline double rectangle_area(const std::vector<int>& faces, const std::vector<Vector2>& corner_uv, double* angle = nullptr)
+inline double rectangle_area(const std::vector<int>& faces, const std::vector<Vector2>& corner_uv,
+                             double* angle = nullptr)
 {
   std::vector<Vector2> points;
   points.reserve(3 * faces.size());
@@ -99,7 +100,8 @@ class Packing_splitter
             const int fe = 3 * f + k;
             if(!joined(fe)) continue;
             const int g = s_.twin[std::size_t(fe)] / 3;
-            if(token_[std::size_t(g)] == token && component_[std::size_t(g)] < 0 && side_[std::size_t(g)] == side_[std::size_t(f)])
+            if(token_[std::size_t(g)] == token && component_[std::size_t(g)] < 0
+               && side_[std::size_t(g)] == side_[std::size_t(f)])
             {
               component_[std::size_t(g)] = c;
               sets[std::size_t(c)].push_back(g);
@@ -130,7 +132,8 @@ class Packing_splitter
         const int fe = 3 * f + k;
         if(!joined(fe)) continue;
         const int g = s_.twin[std::size_t(fe)] / 3;
-        if(token_[std::size_t(g)] == token_[std::size_t(f)] && component_[std::size_t(g)] != component_[std::size_t(f)] && fe < s_.twin[std::size_t(fe)])
+        if(token_[std::size_t(g)] == token_[std::size_t(f)] && component_[std::size_t(g)] != component_[std::size_t(f)]
+           && fe < s_.twin[std::size_t(fe)])
           length += (uv_[std::size_t(3 * f + (k + 1) % 3)] - uv_[std::size_t(fe)]).norm();
       }
     return length;
@@ -144,7 +147,12 @@ class Packing_splitter
     // directions: the rectangle's two axes and the principal axis of the cluster centroids
     double total = 0.;
     Vector2 mean = Vector2::Zero();
-    for(int f : faces) { const double a = uv_face_area(uv_, f); total += a; mean += a * centroid_[std::size_t(cluster_[std::size_t(f)])]; }
+    for(int f : faces)
+    {
+      const double a = uv_face_area(uv_, f);
+      total += a;
+      mean += a * centroid_[std::size_t(cluster_[std::size_t(f)])];
+    }
     if(!(total > 0.)) return {};
     mean /= total;
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
@@ -198,7 +206,9 @@ public:
     const std::size_t nf = s.number_of_faces();
     cluster_.resize(nf);
     std::iota(cluster_.begin(), cluster_.end(), 0);
-    auto find = [&](int f) { while(cluster_[std::size_t(f)] != f) f = cluster_[std::size_t(f)] = cluster_[std::size_t(cluster_[std::size_t(f)])]; return f; };
+    auto find = [&](int f) {
+      while(cluster_[std::size_t(f)] != f) f = cluster_[std::size_t(f)] = cluster_[std::size_t(cluster_[std::size_t(f)])];
+      return f; };
     for(std::size_t fe = 0; fe < 3 * nf; ++fe)
       if(!fixed_.empty() && joined(int(fe)) && fixed_[std::size_t(s.edge_of[fe])])
       {
