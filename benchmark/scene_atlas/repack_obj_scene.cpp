@@ -6,6 +6,9 @@
 // crossings and overlap (one page), and writes the merged OBJ if asked.
 // Measures the packing alone, without unwrapping the meshes again.
 //   repack_obj_scene SIZE PADDING FILL(0: off) MERGED.obj|- A.obj B.obj ...
+// Not built by CMake; from the repository root:
+//   g++ -O2 -DNDEBUG -frounding-math -std=gnu++17 -DCGAL_EIGEN3_ENABLED -Iinclude -isystem /usr/include/eigen3 \
+//     benchmark/scene_atlas/repack_obj_scene.cpp -o repack_obj_scene -lgmp -lmpfr
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/pack_scene_atlas.h>
