@@ -14,9 +14,13 @@
 #include "../benchmark/hard_surface_meshes.h"
 
 #include <CGAL/Surface_mesh_parameterization/cut_and_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/atlas_validity.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/final_solve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/plan.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
+
+#include <algorithm>
+#include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace ic = SMP::internal::cut;
@@ -110,4 +114,60 @@ TEST(Hard_surface, a_plate_cut_into_many_pieces_gets_no_box)
   EXPECT_EQ(run.result.border_crossings, std::size_t(0));
   EXPECT_LE(run.result.distortion, ic::tuning::default_distortion_target);
   EXPECT_LT(run.result.newton_iterations, std::size_t(250)); // measured: 143 (376 with the box)
+}
+
+// On a hard-surface part the barrier's solve of charts cut into overlap-free
+// pieces is capped (Final_solve_args::pieces_max_iterations, set by the
+// plan's final_args_on()): the plate's one chart, solved from its Tutte map
+// without the barrier, crosses itself and is cut into pieces; their solve
+// under the barrier then stops at the cap, below what it takes uncapped, and
+// leaves a valid atlas (no flip, no border crossing, disks) near the
+// uncapped E_d. An organic mesh keeps the uncapped solve.
+TEST(Hard_surface, the_pieces_solve_is_capped_on_a_hard_surface_and_stays_valid)
+{
+  const Surface_mesh plate = cut_benchmark::hard_surface::plate(3, 2, 64, 0.1);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), surface) == ic::Indexing_status::OK);
+  ic::Map_state start;
+  start.is_cut.assign(surface.edges.size(), 0);
+  ASSERT_TRUE(ic::initial_map(surface, start) == SMP::OK);
+  const ic::Final_solve_args defaults;
+  EXPECT_EQ(defaults.pieces_max_iterations, 0);
+  const ic::Final_solve_args args = ic::final_args_on(surface, defaults);
+  ASSERT_EQ(args.pieces_max_iterations, ic::tuning::hard_surface_pieces_newton_iterations);
+  const Surface_mesh sphere = make_mesh<Surface_mesh>(sphere_soup(16));
+  ic::Indexed_surface<Surface_mesh> sphere_surface;
+  ASSERT_TRUE(ic::index_surface(sphere, get(CGAL::vertex_point, sphere), sphere_surface) == ic::Indexing_status::OK);
+  EXPECT_EQ(ic::final_args_on(sphere_surface, defaults).pieces_max_iterations, 0);
+
+  // the pieces' solve (final_solve_box() after the cut), capped at `cap` (0: not)
+  auto solve = [&](int cap, ic::Map_state& state, std::size_t& iterations) {
+    state = start;
+    ic::Final_solve_args a = args;
+    a.pieces_max_iterations = cap;
+    ic::Work_log log;
+    ic::Unboxed_final_map unboxed;
+    ASSERT_TRUE(ic::final_solve_without_box(surface, a, true, state, log, unboxed) == SMP::OK);
+    ASSERT_GT(unboxed.pieces, 1); // cut into pieces
+    const std::size_t before = log.final_work.iterations;
+    ASSERT_TRUE(ic::final_solve_box(a, unboxed, state, log) == SMP::OK);
+    iterations = log.final_work.iterations - before;
+  };
+  auto valid = [&](const ic::Map_state& state) {
+    const std::vector<char> crossing = ic::Border_barrier_term(state.chart).charts_with_crossing(state.x);
+    return ic::is_valid_atlas(surface, state) && std::count(crossing.begin(), crossing.end(), char(1)) == 0;
+  };
+  ic::Map_state uncapped, short_cap, tuned;
+  std::size_t uncapped_iterations = 0, short_iterations = 0, tuned_iterations = 0;
+  solve(0, uncapped, uncapped_iterations);
+  const int cap = 3;
+  solve(cap, short_cap, short_iterations);
+  solve(ic::tuning::hard_surface_pieces_newton_iterations, tuned, tuned_iterations);
+  EXPECT_GT(uncapped_iterations, std::size_t(cap));
+  EXPECT_LE(short_iterations, std::size_t(cap));
+  EXPECT_LE(tuned_iterations, std::size_t(ic::tuning::hard_surface_pieces_newton_iterations));
+  EXPECT_TRUE(valid(uncapped));
+  EXPECT_TRUE(valid(short_cap));
+  EXPECT_TRUE(valid(tuned));
+  EXPECT_LE(ic::mean_distortion(tuned.chart, tuned.x), ic::tuning::default_distortion_target);
 }

@@ -56,6 +56,9 @@ struct Final_solve_args
   // no box's solve where the charts were cut into more overlap-free pieces than this (0: any number)
   int box_max_pieces = tuning::box_max_pieces;
   int max_iterations = 500;
+  // Newton iterations at most of the barrier's solve without box of charts cut into overlap-free
+  // pieces (0: max_iterations; hard-surface parts, pipeline/plan.h: E_d settles long before the barrier)
+  int pieces_max_iterations = 0;
   Inner_solver solver = Inner_solver::NEWTON;
   double tolerance_factor = 1.; // the Newton tolerances below times this (Preset::FAST)
 };
@@ -257,6 +260,8 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
 /// costs more than its budget (or takes E_d above its ceiling), it is
 /// weakened, then dropped: the map without box is the result. No box where
 /// the final solve cut the charts into more than `args.box_max_pieces` pieces.
+/// Where the charts were cut into pieces, the solve without box does at
+/// most `args.pieces_max_iterations` Newton iterations if that is above 0.
 inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_final_map& unboxed, Map_state& state,
                                   Work_log& log)
 {
@@ -265,7 +270,10 @@ inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_fi
   const bool too_many_pieces = args.box_max_pieces > 0 && unboxed.pieces > args.box_max_pieces;
   double stiffness = too_many_pieces ? 0. : args.box.final_stiffness();
   const bool barrier = unboxed.barrier || (stiffness > 0. && args.global_injectivity);
-  auto solve = [&](double s) { return final_minimization(args, barrier, s, true, state, log); };
+  Final_solve_args unboxed_args = args; // the pieces' solve without box: capped where asked
+  if(unboxed.pieces > 0 && args.pieces_max_iterations > 0)
+    unboxed_args.max_iterations = (std::min)(args.max_iterations, args.pieces_max_iterations);
+  auto solve = [&](double s) { return final_minimization(s > 0. ? args : unboxed_args, barrier, s, true, state, log); };
   Error_code status = OK;
   double unboxed_distortion = unboxed.distortion;
   if(unboxed.restart && stiffness > 0.)

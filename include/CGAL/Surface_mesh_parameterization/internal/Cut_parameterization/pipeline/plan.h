@@ -190,6 +190,15 @@ Error_code split_where_distorted(const Surface& surface, const Cut_parameterizat
   return OK;
 }
 
+/// `final` on `surface`: on a hard-surface part (is_hard_surface()) the
+/// barrier's solve of charts cut into overlap-free pieces is capped.
+template <typename Surface>
+Final_solve_args final_args_on(const Surface& surface, Final_solve_args final)
+{
+  if(is_hard_surface(surface)) final.pieces_max_iterations = tuning::hard_surface_pieces_newton_iterations;
+  return final;
+}
+
 /// The copy's cuts split as any mesh of its size (without a bound only): its
 /// map solved, then split_where_distorted(); the copy's cuts stay as they
 /// were where no split is kept or a solve fails; a cancel is returned.
@@ -199,15 +208,16 @@ Error_code split_on_coarse_copy(const Surface& coarse_surface, const Cut_paramet
 {
   if(!run.splits || run.bound > 0.) return OK;
   const std::vector<char> cuts = coarse_state.is_cut; // where a solve fails
+  const Final_solve_args final = final_args_on(coarse_surface, run.final);
   Error_code status = OK;
   {
     Scoped_timer timer(log.timings.final_solve);
-    status = final_solve(coarse_surface, run.final, false, coarse_state, log);
+    status = final_solve(coarse_surface, final, false, coarse_state, log);
   }
   if(status == OK)
   {
     coarse_state.distortion = mean_distortion(coarse_state.chart, coarse_state.x);
-    status = split_where_distorted(coarse_surface, o, progress, run, run.final, coarse_state, log);
+    status = split_where_distorted(coarse_surface, o, progress, run, final, coarse_state, log);
   }
   if(status == ERROR_CANCELED) return status;
   if(status != OK) coarse_state.is_cut = cuts;
@@ -289,7 +299,7 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   if(status != OK) return status;
 
   Scoped_timer final_timer(log.timings.final_solve);
-  Final_solve_args final = run.final;
+  Final_solve_args final = final_args_on(surface, run.final);
   if(coarse) final.box.tolerance = tuning::large_mesh_box_tolerance;
   // the map is still the Tutte map where no alternation ran on this mesh
   const bool from_tutte_map = coarse || o.number_of_passes == 0;
