@@ -15,12 +15,12 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/Scoped_timer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/carried_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/chart_packing.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/packing_split.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/cuts/greedy_splits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/Map_state.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/alternation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/bound_search.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/final_solve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/finish_atlas.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progress.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
@@ -307,27 +307,6 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   if(status != OK) return status;
   state.distortion = mean_distortion(state.chart, state.x);
   return split_where_distorted(surface, o, progress, run, final, state, log);
-}
-
-/// Packs the charts of the solved cut mesh in `state` (cut first for packing
-/// where the options ask) and checks the result
-/// (finite, no flipped face, no forbidden edge cut).
-template <typename Surface>
-Error_code finish_atlas(const Surface& surface, const Cut_parameterization_options& o, const Progress& progress,
-                        Map_state& state, Work_log& log, Packing_result& packing)
-{
-  Scoped_timer packing_timer(log.timings.packing);
-  if(o.split_charts_for_packing) packing::cut_charts_for_packing(surface, *o.split_charts_for_packing, state);
-  packing = pack_charts(state.chart, state.x, Packing_settings{o.texture_size, o.padding, o.world_units});
-  packing_timer.stop();
-  // never hand out a silently wrong map (checked in every build type)
-  if(!state.x.allFinite() || number_of_flipped_faces(state.chart, state.x) > 0) return ERROR_NO_1_TO_1_MAPPING;
-  for(std::size_t e = 0; e < state.rules.forbidden.size(); ++e)
-    if(state.rules.forbidden[e] && state.is_cut[e]) return ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
-  if(progress && !progress(progress_report("final", o.number_of_passes, 0, alternations_per_pass(o), o.epsilon_end,
-                                           state.distortion)))
-    return ERROR_CANCELED;
-  return OK;
 }
 
 /// A trial of the bound search without the alternation: from the initial
