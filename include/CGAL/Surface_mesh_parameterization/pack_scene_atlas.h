@@ -15,7 +15,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -80,48 +79,38 @@ bool read_corner_uvs(const Surface& surface, const HalfedgeUVMap& uvmap, std::ve
 }
 
 /// Charts (faces joined across edges that are neither seams, flagged in
-/// `seams` per edge, nor borders) of one mesh, as scene charts at 3D scale;
-/// `face_chart` and the frame corners of each face are kept to write the
-/// UVs back. False if a UV is not finite or the UV area is zero.
-template <typename Surface, typename HalfedgeUVMap>
-bool read_scene_charts(const Surface& surface, const std::vector<char>& seams, const HalfedgeUVMap& uvmap, int mesh,
-                       std::vector<Scene_chart>& charts, std::vector<int>& face_chart)
+/// `seams` per edge, nor borders: packing::face_charts()) of one mesh, with
+/// the UV `corner_uv` of every corner 3f+k (read_corner_uvs()), as scene
+/// charts at 3D scale; `face_chart` and the frame corners of each face are
+/// kept to write the UVs back. False if the UV area is zero.
+template <typename Surface>
+bool read_scene_charts(const Surface& surface, const std::vector<char>& seams, const std::vector<Vector2>& corner_uv,
+                       int mesh, std::vector<Scene_chart>& charts, std::vector<int>& face_chart)
 {
   const std::size_t nf = surface.number_of_faces();
-  std::vector<int> parent(nf);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int f) { while(parent[f] != f) f = parent[f] = parent[parent[f]]; return f; };
-  for(int fe = 0; fe < int(3 * nf); ++fe)
-    if(surface.twin[fe] >= 0 && !seams[std::size_t(surface.edge_of[fe])])
-      parent[find(fe / 3)] = find(surface.twin[fe] / 3);
+  std::vector<int> label(nf, -1);
+  const std::vector<std::vector<int>> components = packing::face_charts(surface, seams);
+  for(std::size_t c = 0; c < components.size(); ++c)
+    for(int f : components[c]) label[std::size_t(f)] = int(c);
   std::vector<std::array<Vector2, 3>> uv(nf);
   double area_3d = 0., area_uv = 0.;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto p = get(uvmap, surface.corner_halfedge[f][k]);
-      uv[f][k] = Vector2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-      if(!uv[f][k].allFinite()) return false;
-    }
+    for(int k = 0; k < 3; ++k) uv[f][k] = corner_uv[3 * f + std::size_t(k)];
     const Vector3 &a = surface.points[surface.corner_vertex[f][0]], &b = surface.points[surface.corner_vertex[f][1]],
                   &c = surface.points[surface.corner_vertex[f][2]];
     area_3d += 0.5 * (b - a).cross(c - a).norm();
-    const Vector2 e1 = uv[f][1] - uv[f][0], e2 = uv[f][2] - uv[f][0];
-    area_uv += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+    area_uv += packing::uv_face_area(corner_uv, int(f));
   }
   if(!(area_uv > 0.) || !(area_3d > 0.)) return false;
   const double scale = std::sqrt(area_3d / area_uv); // the mesh's UV at 3D scale
-  std::vector<int> chart_of_root(nf, -1);
-  std::vector<std::vector<std::array<Vector2, 3>>> corners;
-  std::vector<std::vector<int>> faces;
+  std::vector<std::vector<std::array<Vector2, 3>>> corners(components.size());
+  std::vector<std::vector<int>> faces(components.size());
   face_chart.assign(nf, -1);
-  for(std::size_t f = 0; f < nf; ++f)
+  for(std::size_t f = 0; f < nf; ++f) // in face order, as the charts' shapes were always read
   {
-    int& c = chart_of_root[find(int(f))];
-    if(c < 0) { c = int(corners.size()); corners.emplace_back(); faces.emplace_back(); }
-    corners[c].push_back(uv[f]);
-    faces[c].push_back(int(f));
+    corners[std::size_t(label[f])].push_back(uv[f]);
+    faces[std::size_t(label[f])].push_back(int(f));
   }
   for(std::size_t c = 0; c < corners.size(); ++c)
   {
@@ -352,10 +341,10 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
     const Surface& s = surfaces[m];
     std::vector<char> seams(s.edges.size());
     for(std::size_t e = 0; e < s.edges.size(); ++e) seams[e] = get(meshes[m].seam_edge_map, s.edges[e]) ? 1 : 0;
+    std::vector<ic::Vector2> uv;
+    if(!ic::read_corner_uvs(s, meshes[m].uvmap, uv)) { result.error = ERROR_WRONG_PARAMETER; return result; }
     if(split_fill)
     {
-      std::vector<ic::Vector2> uv;
-      if(!ic::read_corner_uvs(s, meshes[m].uvmap, uv)) { result.error = ERROR_WRONG_PARAMETER; return result; }
       added_seams[m] = ic::packing::packing_cuts(s, seams, {}, uv, *split_fill, result.added_charts[m]);
       double area = 0.; // E_s's unit: the radius of the disk of the mesh's area
       for(const auto& cv : s.corner_vertex)
@@ -364,7 +353,7 @@ Scene_atlas_result pack_scene_atlas(const std::vector<SceneAtlasMesh>& meshes,
         area > 0. ? ic::packing::flagged_length(s, added_seams[m]) / std::sqrt(area / M_PI) : 0.;
       for(std::size_t e = 0; e < s.edges.size(); ++e) seams[e] |= added_seams[m][e];
     }
-    if(!ic::read_scene_charts(s, seams, meshes[m].uvmap, int(m), charts, face_chart[m]))
+    if(!ic::read_scene_charts(s, seams, uv, int(m), charts, face_chart[m]))
     { result.error = ERROR_WRONG_PARAMETER; return result; }
   }
   ic::Scene_layout layout;

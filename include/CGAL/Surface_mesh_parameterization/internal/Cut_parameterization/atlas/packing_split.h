@@ -259,17 +259,11 @@ public:
   }
 };
 
-/// The edges to cut so that every chart of `s` (its faces joined across
-/// edges neither border nor flagged in `seam`) that fills less than `fill`
-/// of its minimum-area bounding rectangle (UVs `corner_uv`, per corner 3f+k)
-/// is cut into pieces that fill more (Packing_splitter); edges flagged in
-/// `fixed` (per edge, or empty) are never cut. `pieces` gets the number of
-/// charts added.
-/// \pre the UVs of each chart form an overlap-free, flip-free map; 0 < fill <= 1
-/// \post every flagged edge is an interior edge, not in `seam` nor in `fixed`
+/// The charts of `s`: its faces joined across edges neither border nor
+/// flagged in `seam` (per edge), each listed from its lowest face outwards,
+/// in the order of their lowest faces.
 template <typename Surface>
-std::vector<char> packing_cuts(const Surface& s, const std::vector<char>& seam, const std::vector<char>& fixed,
-                               const std::vector<Vector2>& corner_uv, double fill, std::size_t& pieces)
+std::vector<std::vector<int>> face_charts(const Surface& s, const std::vector<char>& seam)
 {
   const std::size_t nf = s.number_of_faces();
   std::vector<int> chart(nf, -1);
@@ -291,6 +285,23 @@ std::vector<char> packing_cuts(const Surface& s, const std::vector<char>& seam, 
       }
     }
   }
+  return charts;
+}
+
+/// The edges to cut so that every chart of `s` (its faces joined across
+/// edges neither border nor flagged in `seam`) that fills less than `fill`
+/// of its minimum-area bounding rectangle (UVs `corner_uv`, per corner 3f+k)
+/// is cut into pieces that fill more (Packing_splitter); edges flagged in
+/// `fixed` (per edge, or empty) are never cut. `pieces` gets the number of
+/// charts added.
+/// \pre the UVs of each chart form an overlap-free, flip-free map; 0 < fill <= 1
+/// \post every flagged edge is an interior edge, not in `seam` nor in `fixed`
+template <typename Surface>
+std::vector<char> packing_cuts(const Surface& s, const std::vector<char>& seam, const std::vector<char>& fixed,
+                               const std::vector<Vector2>& corner_uv, double fill, std::size_t& pieces)
+{
+  const std::size_t nf = s.number_of_faces();
+  const std::vector<std::vector<int>> charts = face_charts(s, seam);
   Packing_splitter<Surface> splitter(s, seam, fixed, corner_uv, fill);
   std::vector<int> piece(nf, -1);
   int next = 0;
@@ -336,9 +347,8 @@ std::size_t cut_charts_for_packing(const Surface& s, double fill, State& state)
 {
   std::vector<Vector2> uv(3 * s.number_of_faces());
   for(std::size_t c = 0; c < uv.size(); ++c) uv[c] = state.x.template segment<2>(2 * state.corner_uv[c]);
-  std::vector<char> seams(state.is_cut.begin(), state.is_cut.end());
   std::size_t added = 0;
-  const std::vector<char> cut = packing_cuts(s, seams, state.rules.forbidden, uv, fill, added);
+  const std::vector<char> cut = packing_cuts(s, state.is_cut, state.rules.forbidden, uv, fill, added);
   if(added == 0) return 0;
   std::vector<char> is_cut = state.is_cut;
   for(std::size_t e = 0; e < cut.size(); ++e)
