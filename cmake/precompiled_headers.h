@@ -3,6 +3,7 @@
 // cut_param_precompiled_headers() in CMakeLists.txt. A build-speed aid only:
 // every program still includes what it uses, and a program copied out of
 // the project compiles without this file.
+#include "shared_instances.h" // first: it declares instances the headers below use
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -19,4 +20,3 @@
 #include <string>
 #include <vector>
 
-#include "shared_instances.h"

@@ -8,6 +8,19 @@
 #ifndef CUT_PARAM_SHARED_INSTANCES_H
 #define CUT_PARAM_SHARED_INSTANCES_H
 
+// Eigen's 2x2 symmetric eigensolver (the major axis in Bounding_box_term
+// and the packing split), compiled once (cmake/shared_instances/surface_mesh.cpp):
+// inline members of the library's classes call it, so every program
+// instantiated it whether it ran it or not, about 12 s of GCC's time per file
+// (measured in CMakeLists.txt). Declared before the headers that use it.
+#include <Eigen/Eigenvalues>
+#define CUT_PARAM_EIGEN_INSTANCE(KEYWORD)                                                            \
+  namespace Eigen {                                                                                  \
+  KEYWORD template SelfAdjointEigenSolver<Matrix2d>& SelfAdjointEigenSolver<Matrix2d>::compute<Matrix2d>( \
+    const EigenBase<Matrix2d>&, int);                                                                \
+  }
+CUT_PARAM_EIGEN_INSTANCE(extern)
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>

@@ -5,3 +5,4 @@
 #include "../shared_instances.h"
 
 CUT_PARAM_SHARED_INSTANCE(, CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>)
+CUT_PARAM_EIGEN_INSTANCE()
