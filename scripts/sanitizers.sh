@@ -78,11 +78,16 @@ export UBSAN_OPTIONS="$ubsan"
 # and InnerSolvers cover; and the Polyhedron_3 instances (<1>) of the
 # heaviest typed tests repeat their Surface_mesh instances (<0>) after the
 # mesh is indexed, which the lighter typed tests check for Polyhedron_3.
+# The two Default_target runs on CGAL's femur.off (7,798 faces: 288 s and
+# over 300 s, its timeout, under the sanitizers on a loaded machine) repeat
+# the greedy splits and the bound search that Low_poly and Distortion_bound
+# run on smaller meshes; the Release suite (scripts/test.sh) keeps them.
 skip='^install_and_find_package$'
 if [ "$tool_tests" = OFF ]; then
   skip="$skip|^uv_unwrap_(max_distortion|hide_seams|report_visibility|box_2_1|inner_solver)$"
   skip="$skip|^(Distortion_bound|Seam_shortening_runs|InjectivityTyped|Forbidden_seams|MultiresolutionTyped)[.].*<1>$"
   skip="$skip|^CutAndParameterizeTyped[.]scale_invariance<1>$"
+  skip="$skip|^Default_target[.](a_map_left_above_it_is_split_down_to_it|a_low_poly_model_the_splits_leave_above_it_gets_the_bound_search)$"
 fi
 cd "$build"
 ctest --output-on-failure -j "$jobs" -E "$skip" "$@"

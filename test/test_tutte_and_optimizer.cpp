@@ -2,15 +2,19 @@
 // optimizer (symmetric_dirichlet_parameterize, internal Distortion_minimizer)
 // on generated disks: no flipped face ever, energy strictly below Tutte's,
 // developable patches reach E_d = 4, results do not depend on the scale;
-// the sparse Cholesky solver on systems below and above its METIS threshold.
+// the sparse Cholesky solver on systems below and above its METIS threshold;
+// the Hessian assembler's patterns, merged or built whole.
 #include "generators.h"
 
 #include <CGAL/Surface_mesh_parameterization/parameterization_metrics.h>
 #include <CGAL/Surface_mesh_parameterization/symmetric_dirichlet_parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 #include <set>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -491,6 +495,67 @@ TEST(TutteAndOptimizer, serial_openmp_scope_and_cholmod_keep_the_callers_openmp_
   omp_set_max_active_levels(before);
 }
 #endif
+
+// The Hessian assembler builds the pattern of a sequence of elements again
+// by merging the elements after the kept leading ones (border barrier pairs
+// after the faces): the matrix, its values and the diagonal are those of a
+// fresh assembler given the same elements, through growing, shrinking and
+// changed trailing elements, a changed leading element and a new dimension.
+TEST(TutteAndOptimizer, hessian_assembler_merged_pattern_equals_a_fresh_one)
+{
+  const int n = 60;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> dof(0, n - 1);
+  std::vector<std::vector<int>> leading;
+  for(int e = 0; e < 40; ++e) leading.push_back({dof(rng), dof(rng), dof(rng), dof(rng), dof(rng), dof(rng)});
+  ic::Hessian_assembler kept;
+  auto build = [&](ic::Hessian_assembler& h, const std::vector<std::vector<int>>& elements, int dimension) {
+    h.clear();
+    for(const auto& e : elements) h.add_element(e);
+    h.finalize(dimension);
+    h.set_zero();
+    for(std::size_t e = 0; e < elements.size(); ++e)
+    {
+      const std::size_t m = elements[e].size();
+      Eigen::MatrixXd block(m, m);
+      for(std::size_t i = 0; i < m; ++i)
+        for(std::size_t j = 0; j < m; ++j) block(i, j) = 1. + double((e * 7 + i * 3 + j * 3 + i * j) % 11);
+      h.add(int(e), block);
+    }
+    h.add_to_diagonal(0.5);
+  };
+  for(int round = 0; round < 12; ++round)
+  {
+    SCOPED_TRACE("round " + std::to_string(round));
+    std::vector<std::vector<int>> elements = leading;
+    if(round == 6) elements[3] = {dof(rng), dof(rng)}; // a leading element changed
+    const int trailing = (round * 17) % 23;
+    for(int e = 0; e < trailing; ++e) elements.push_back(e % 3 == 0 ? std::vector<int>{dof(rng), dof(rng)}
+                                                                     : std::vector<int>{dof(rng), dof(rng), dof(rng), dof(rng)});
+    const int dimension = round == 9 ? n + 4 : n;
+    ic::Hessian_assembler fresh;
+    build(kept, elements, dimension);
+    build(fresh, elements, dimension);
+    const ic::Sparse_matrix& a = kept.matrix();
+    const ic::Sparse_matrix& b = fresh.matrix();
+    ASSERT_EQ(a.rows(), b.rows());
+    ASSERT_EQ(a.nonZeros(), b.nonZeros());
+    ASSERT_TRUE(a.isCompressed());
+    EXPECT_TRUE(std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.cols() + 1, b.outerIndexPtr()));
+    EXPECT_TRUE(std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr()));
+    EXPECT_TRUE(std::equal(a.valuePtr(), a.valuePtr() + a.nonZeros(), b.valuePtr()));
+    EXPECT_EQ(kept.mean_diagonal(), fresh.mean_diagonal());
+    // the lower triangle and full diagonal of the sum of the blocks
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(dimension, dimension);
+    for(int d = 0; d < dimension; ++d) dense(d, d) = 0.5;
+    for(std::size_t e = 0; e < elements.size(); ++e)
+      for(std::size_t i = 0; i < elements[e].size(); ++i)
+        for(std::size_t j = 0; j < elements[e].size(); ++j)
+          if(elements[e][i] >= elements[e][j])
+            dense(elements[e][i], elements[e][j]) += 1. + double((e * 7 + i * 3 + j * 3 + i * j) % 11);
+    EXPECT_EQ((Eigen::MatrixXd(a) - dense).norm(), 0.);
+  }
+}
 
 TEST(TutteAndOptimizer, sparse_cholesky_block_ordering)
 {

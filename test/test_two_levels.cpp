@@ -4,7 +4,8 @@
 // carried map must have no flipped face by construction, keep the copy's
 // vertices where they were, and the two-level run must give a valid atlas
 // (no flip, finite UVs, disks), the same for any thread count. The plan
-// does not call it (measured: doc/design/pipeline.dox).
+// does not call it (measured: doc/design/pipeline.dox). The final solve of a
+// large mesh starts from a copy of its cut mesh solved and carried back.
 #include "cut_result_checks.h"
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Indexed_surface.h>
@@ -130,4 +131,48 @@ TEST(TwoLevels, two_level_cuts_give_a_valid_cut_mesh)
   // the same on 1 and 2 threads, bit for bit
   EXPECT_TRUE(cuts[0] == cuts[1]);
   EXPECT_TRUE(maps[0].size() == maps[1].size() && maps[0] == maps[1]);
+}
+
+// The final solve's start of a large mesh (start_from_solved_copy(), called
+// by the plan where the cuts were decided on a copy): the input's cut mesh
+// simplified to a copy cut where it is, solved there and carried back. Every
+// chart starts from the carried map: no flipped face, no crossing border,
+// less distorted than the Tutte map and within 5% of the input's minimum,
+// and the input's solve under the
+// border barrier converges from it in fewer Newton iterations than from
+// the Tutte map, to the same E_d.
+TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Map_state state;
+  state.is_cut.assign(surface.edges.size(), 0);
+  ASSERT_EQ(ic::initial_map(surface, state), SMP::OK);
+  const ic::UV_vector tutte = state.x;
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Work_log log;
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, state, log), 1);
+  EXPECT_TRUE(state.x.allFinite());
+  EXPECT_EQ(ic::number_of_flipped_faces(state.chart, state.x), 0);
+  const std::vector<char> crossing = ic::Border_barrier_term(state.chart).charts_with_crossing(state.x);
+  EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
+  const double carried_distortion = ic::mean_distortion(state.chart, state.x);
+  EXPECT_LT(carried_distortion, ic::mean_distortion(state.chart, tutte));
+  int iterations[2] = {0, 0};
+  double distortion[2] = {0., 0.};
+  for(int from_copy : {0, 1})
+  {
+    ic::UV_vector x = from_copy ? state.x : tutte;
+    ic::Distortion_minimizer minimizer(state.chart, std::vector<double>(state.chart.number_of_faces(), 1.), true);
+    const ic::Newton_report report = minimizer.minimize(x, 500, ic::tuning::constrained_tolerance);
+    ASSERT_TRUE(report.ok());
+    EXPECT_EQ(ic::number_of_flipped_faces(state.chart, x), 0);
+    iterations[from_copy] = report.iterations;
+    distortion[from_copy] = ic::mean_distortion(state.chart, x);
+  }
+  EXPECT_LT(iterations[1], iterations[0]) << "from the copy " << iterations[1] << ", from Tutte " << iterations[0];
+  EXPECT_NEAR(distortion[1], distortion[0], 1e-3 * distortion[0]);
+  // the carried map is near the input's minimum already
+  EXPECT_LT(carried_distortion, 1.05 * distortion[1]);
 }

@@ -1,12 +1,16 @@
 // Assembles element blocks into a sparse symmetric matrix whose pattern is
 // fixed: the position of every block entry in the value array is computed
-// once, so each Newton step only zeroes and scatters values.
+// once, so each Newton step only zeroes and scatters values. Where the
+// pattern is built again with the same leading elements (the border
+// barrier's pairs change, the faces stay), the pattern of those elements is
+// kept and only the others are merged into it.
 #ifndef CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 #define CGAL_SMP_CUT_INTERNAL_HESSIAN_ASSEMBLER_H
 
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <initializer_list>
 #include <vector>
 
 namespace CGAL {
@@ -18,61 +22,70 @@ using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>; // as i
 
 class Hessian_assembler
 {
-  std::vector<std::vector<int>> element_dofs_;
-  std::vector<std::vector<int>> element_slots_; // lower-triangle value index per (i,j), -1 above
+  // the elements, flat: element e couples dofs_[dof_start_[e] .. dof_start_[e + 1])
+  std::vector<int> dofs_;
+  std::vector<int> dof_start_{0};
+  std::vector<int> slots_;      // per element, n x n: lower-triangle value index of (i, j), -1 above
+  std::vector<int> slot_start_; // element e's slots from slot_start_[e]
   std::vector<int> diagonal_slots_;
   Sparse_matrix matrix_;
   int dimension_ = 0;
+
+  // The kept pattern: the full diagonal and the first base_elements_ elements of an earlier build.
+  std::vector<int> base_dofs_, base_dof_start_{0};
+  std::size_t base_elements_ = 0;
+  int base_dimension_ = -1;
+  std::vector<int> base_outer_, base_inner_; // compressed columns, lower triangle
+  std::vector<int> base_slots_, base_diagonal_; // slots of its elements and diagonal within it
+  std::vector<int> base_to_new_;             // index of each of its entries in matrix_
+  std::vector<int> extra_start_, extra_rows_, fill_; // the other elements' entries, by column
+  std::vector<int> outer_, inner_;                   // the merged pattern
 
 public:
   /// Forgets every element (the pattern is built again by finalize()).
   void clear()
   {
-    element_dofs_.clear();
-    element_slots_.clear();
+    dofs_.clear();
+    dof_start_.assign(1, 0);
   }
 
   /// Declares an element coupling the given degrees of freedom; returns its id.
-  int add_element(const std::vector<int>& dofs)
-  {
-    element_dofs_.push_back(dofs);
-    return int(element_dofs_.size()) - 1;
-  }
+  int add_element(std::initializer_list<int> dofs) { return push_element(dofs.begin(), dofs.end()); }
+  int add_element(const std::vector<int>& dofs) { return push_element(dofs.data(), dofs.data() + dofs.size()); }
 
-  /// Builds the pattern (lower triangle plus full diagonal) of a dimension x dimension matrix.
+  /// Builds the pattern (lower triangle plus full diagonal) of a dimension x
+  /// dimension matrix. The same pattern, entries in the same order, whether
+  /// built whole or merged into the kept one.
   void finalize(int dimension)
   {
     dimension_ = dimension;
-    std::size_t count = std::size_t(dimension);
-    for(const auto& dofs : element_dofs_) count += dofs.size() * (dofs.size() + 1) / 2;
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(count); // grown by doubling, a large part of a new pattern's time at 160k faces
-    for(int d = 0; d < dimension; ++d) entries.emplace_back(d, d, 0.);
-    for(const auto& dofs : element_dofs_)
-      for(int a : dofs)
-        for(int b : dofs)
-          if(a >= b) entries.emplace_back(a, b, 0.);
-    matrix_.resize(dimension, dimension);
-    matrix_.setFromTriplets(entries.begin(), entries.end());
-    matrix_.makeCompressed();
+    const std::size_t elements = dof_start_.size() - 1;
+    std::size_t same = 0; // leading elements equal to the kept pattern's
+    if(base_dimension_ == dimension)
+      while(same < (std::min)(elements, base_elements_) && same_element(same)) ++same;
+    if(base_dimension_ != dimension || same < base_elements_)
+      build_base(base_dimension_ == dimension ? same : elements);
+    merge_others();
 
-    diagonal_slots_.resize(dimension);
-    for(int d = 0; d < dimension; ++d) diagonal_slots_[d] = slot(d, d);
-    element_slots_.resize(element_dofs_.size());
-    for(std::size_t e = 0; e < element_dofs_.size(); ++e)
+    slot_start_.resize(elements);
+    std::size_t count = 0;
+    for(std::size_t e = 0; e < elements; ++e)
     {
-      const auto& dofs = element_dofs_[e];
-      const std::size_t n = dofs.size();
-      element_slots_[e].assign(n * n, -1);
-      for(std::size_t i = 0; i < n; ++i)
-        for(std::size_t j = 0; j < n; ++j)
-          if(dofs[i] >= dofs[j]) element_slots_[e][i * n + j] = slot(dofs[i], dofs[j]);
+      slot_start_[e] = int(count);
+      const std::size_t n = std::size_t(dof_start_[e + 1] - dof_start_[e]);
+      count += n * n;
     }
+    slots_.resize(count);
+    const std::size_t base_slots = base_slots_.size();
+    for(std::size_t s = 0; s < base_slots; ++s)
+      slots_[s] = base_slots_[s] < 0 ? -1 : base_to_new_[std::size_t(base_slots_[s])];
+    for(std::size_t e = base_elements_; e < elements; ++e) element_slots(e, slots_.data() + slot_start_[e]);
+    diagonal_slots_.resize(std::size_t(dimension));
+    for(std::size_t d = 0; d < std::size_t(dimension); ++d) diagonal_slots_[d] = base_to_new_[std::size_t(base_diagonal_[d])];
   }
 
   int dimension() const { return dimension_; }
   const Sparse_matrix& matrix() const { return matrix_; }
-  const std::vector<int>& dofs(int element) const { return element_dofs_[element]; }
 
   void set_zero() { std::fill_n(matrix_.valuePtr(), matrix_.nonZeros(), 0.); }
 
@@ -80,8 +93,8 @@ public:
   template <typename Block>
   void add(int element, const Block& block)
   {
-    const auto& slots = element_slots_[element];
-    const std::size_t n = element_dofs_[element].size();
+    const int* slots = slots_.data() + slot_start_[std::size_t(element)];
+    const std::size_t n = std::size_t(dof_start_[std::size_t(element) + 1] - dof_start_[std::size_t(element)]);
     double* values = matrix_.valuePtr();
     for(std::size_t i = 0; i < n; ++i)
       for(std::size_t j = 0; j < n; ++j)
@@ -105,6 +118,120 @@ public:
   }
 
 private:
+  int push_element(const int* begin, const int* end)
+  {
+    dofs_.insert(dofs_.end(), begin, end);
+    dof_start_.push_back(int(dofs_.size()));
+    return int(dof_start_.size()) - 2;
+  }
+
+  bool same_element(std::size_t e) const
+  {
+    const int b = base_dof_start_[e], n = base_dof_start_[e + 1] - b;
+    return dof_start_[e] == b && dof_start_[e + 1] - dof_start_[e] == n
+           && std::equal(dofs_.begin() + b, dofs_.begin() + b + n, base_dofs_.begin() + b);
+  }
+
+  /// The kept pattern from the diagonal and the first `elements` elements.
+  void build_base(std::size_t elements)
+  {
+    base_dimension_ = dimension_;
+    base_elements_ = elements;
+    base_dof_start_.assign(dof_start_.begin(), dof_start_.begin() + std::ptrdiff_t(elements) + 1);
+    base_dofs_.assign(dofs_.begin(), dofs_.begin() + base_dof_start_.back());
+    std::size_t count = std::size_t(dimension_);
+    for(std::size_t e = 0; e < elements; ++e)
+    {
+      const std::size_t n = std::size_t(base_dof_start_[e + 1] - base_dof_start_[e]);
+      count += n * (n + 1) / 2;
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(count); // grown by doubling, a large part of a new pattern's time at 160k faces
+    for(int d = 0; d < dimension_; ++d) entries.emplace_back(d, d, 0.);
+    for(std::size_t e = 0; e < elements; ++e)
+      for(int i = base_dof_start_[e]; i < base_dof_start_[e + 1]; ++i)
+        for(int j = base_dof_start_[e]; j < base_dof_start_[e + 1]; ++j)
+          if(base_dofs_[std::size_t(i)] >= base_dofs_[std::size_t(j)])
+            entries.emplace_back(base_dofs_[std::size_t(i)], base_dofs_[std::size_t(j)], 0.);
+    matrix_.resize(dimension_, dimension_);
+    matrix_.setFromTriplets(entries.begin(), entries.end());
+    matrix_.makeCompressed();
+    base_outer_.assign(matrix_.outerIndexPtr(), matrix_.outerIndexPtr() + dimension_ + 1);
+    base_inner_.assign(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + matrix_.nonZeros());
+    base_slots_.clear();
+    for(std::size_t e = 0; e < elements; ++e)
+    {
+      const std::size_t n = std::size_t(base_dof_start_[e + 1] - base_dof_start_[e]);
+      base_slots_.resize(base_slots_.size() + n * n);
+      element_slots(e, base_slots_.data() + base_slots_.size() - n * n);
+    }
+    base_diagonal_.resize(std::size_t(dimension_));
+    for(int d = 0; d < dimension_; ++d) base_diagonal_[std::size_t(d)] = slot(d, d);
+  }
+
+  /// matrix_: the kept pattern with the entries of the elements after it
+  /// (bucketed by column, each column's rows sorted, then merged).
+  void merge_others()
+  {
+    const std::size_t elements = dof_start_.size() - 1, columns = std::size_t(dimension_);
+    extra_start_.assign(columns + 1, 0);
+    auto for_each_extra = [&](auto&& f) {
+      for(std::size_t e = base_elements_; e < elements; ++e)
+        for(int i = dof_start_[e]; i < dof_start_[e + 1]; ++i)
+          for(int j = dof_start_[e]; j < dof_start_[e + 1]; ++j)
+            if(dofs_[std::size_t(i)] >= dofs_[std::size_t(j)]) f(dofs_[std::size_t(j)], dofs_[std::size_t(i)]);
+    };
+    for_each_extra([&](int col, int) { ++extra_start_[std::size_t(col) + 1]; });
+    for(std::size_t c = 0; c < columns; ++c) extra_start_[c + 1] += extra_start_[c];
+    extra_rows_.resize(std::size_t(extra_start_[columns]));
+    fill_.assign(extra_start_.begin(), extra_start_.end() - 1);
+    for_each_extra([&](int col, int row) { extra_rows_[std::size_t(fill_[std::size_t(col)]++)] = row; });
+
+    base_to_new_.resize(base_inner_.size());
+    outer_.assign(columns + 1, 0);
+    inner_.clear();
+    inner_.reserve(base_inner_.size() + extra_rows_.size());
+    for(std::size_t col = 0; col < columns; ++col)
+    {
+      int* x = extra_rows_.data() + extra_start_[col];
+      int* const x_end = extra_rows_.data() + extra_start_[col + 1];
+      std::sort(x, x_end);
+      int b = base_outer_[col];
+      const int b_end = base_outer_[col + 1];
+      while(b < b_end || x != x_end)
+      {
+        if(x == x_end || (b < b_end && base_inner_[std::size_t(b)] <= *x))
+        {
+          const int row = base_inner_[std::size_t(b)];
+          while(x != x_end && *x == row) ++x;
+          base_to_new_[std::size_t(b++)] = int(inner_.size());
+          inner_.push_back(row);
+        }
+        else
+        {
+          const int row = *x;
+          while(x != x_end && *x == row) ++x;
+          inner_.push_back(row);
+        }
+      }
+      outer_[col + 1] = int(inner_.size());
+    }
+    matrix_.resize(dimension_, dimension_);
+    matrix_.resizeNonZeros(Eigen::Index(inner_.size()));
+    std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());
+    std::copy(inner_.begin(), inner_.end(), matrix_.innerIndexPtr());
+    set_zero();
+  }
+
+  /// The slots of element e of the current elements in matrix_.
+  void element_slots(std::size_t e, int* out) const
+  {
+    const int* dofs = dofs_.data() + dof_start_[e];
+    const std::size_t n = std::size_t(dof_start_[e + 1] - dof_start_[e]);
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j) out[i * n + j] = dofs[i] >= dofs[j] ? slot(dofs[i], dofs[j]) : -1;
+  }
+
   int slot(int row, int col) const
   {
     const int* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col];

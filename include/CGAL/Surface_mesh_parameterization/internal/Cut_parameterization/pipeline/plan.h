@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progress.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/two_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/hard_edges.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/seams/seam_merging.h>
@@ -282,8 +283,10 @@ Error_code final_solve_rerouted(const Surface& surface, const Final_solve_args& 
 
 /// The method from `state.is_cut` (seams given by the user) up to the
 /// solved cut mesh under `run`: where to cut (on a simplified copy for large
-/// meshes), the final solve (the alternation's seams rerouted beside it
-/// where it ran on this mesh, up to two states at once), the greedy splits;
+/// meshes), the final solve (from a copy of the cut mesh solved and carried
+/// back, start_from_solved_copy(), where the cuts came from a copy; the
+/// alternation's seams rerouted beside it where it ran on this mesh, up to
+/// two states at once), the greedy splits;
 /// `state.distortion` is its E_d. The charts are not packed yet.
 template <typename Surface>
 Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& input_face_lambda,
@@ -301,7 +304,9 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   Scoped_timer final_timer(log.timings.final_solve);
   Final_solve_args final = final_args_on(surface, run.final);
   if(coarse) final.box.tolerance = tuning::large_mesh_box_tolerance;
-  // the map is still the Tutte map where no alternation ran on this mesh
+  // cut on a copy, the input starts from a copy of its cut mesh solved and carried back
+  if(coarse) start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces), final, state, log);
+  // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)
   const bool from_tutte_map = coarse || o.number_of_passes == 0;
   status = final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log);
   if(status != OK) return status;

@@ -1,4 +1,8 @@
-// Two levels: where to cut on a mesh of a few thousand faces, the
+// Two levels. The final solve's start of a large mesh: the map of a copy
+// simplified from the cut input, solved there and carried back
+// (start_from_solved_copy(), called by the plan). Where to cut on a mesh of a
+// few thousand faces (decide_cuts_on_two_levels(), not called: measured
+// worse in doc/design/pipeline.dox): the
 // alternation's upper ε levels on a simplified copy (a quarter of the
 // faces), cut where the input's initial cut is; the copy's map carried to
 // the input by undoing the simplification (pipeline/progressive_map.h), v
@@ -10,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/alternation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/final_solve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progressive_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
@@ -92,6 +97,40 @@ bool decide_cuts_on_two_levels(const Surface& surface, const std::vector<double>
   carrying.stop();
   status = decide_cuts(surface, face_lambda, lambda, o, progress, state, log, Eps_levels{levels - fine_levels});
   return true;
+}
+
+/// The start of the final solve of a large mesh: `state` holds the input's
+/// cut mesh (cut where a copy decided) with its Tutte map. A copy of about
+/// `faces` faces is simplified from it keeping its cuts, solved there from
+/// its Tutte map by final_solve() under `final` without box and without
+/// cutting charts into pieces, then carried
+/// back by undo_collapses(): each chart whose carried map is valid (no flip,
+/// no crossing border) starts from it instead of its Tutte map. Returns the
+/// number of charts that do; 0 (`state.x` untouched) where the copy could
+/// not be made, cut as the input or solved.
+template <typename Surface>
+int start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
+                           const Final_solve_args& final, Map_state& state, Work_log& log)
+{
+  Coarse_surface coarse;
+  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse, true)) return 0;
+  Map_state copy;
+  copy.is_cut = coarse.is_cut;
+  copy.rules.forbidden = coarse.forbidden;
+  // the copy must be cut where the input is: its initial cut adds nothing
+  if(initial_map(coarse.surface, copy) != OK || copy.is_cut != coarse.is_cut) return 0;
+  Final_solve_args copy_args = final;
+  copy_args.box = Box{};                 // the box's solve is the input's
+  copy_args.overlap_partition_faces = 0; // no pieces: the copy keeps the input's cuts
+  if(final_solve(coarse.surface, copy_args, true, copy, log) != OK) return 0;
+  Carried_map carried;
+  if(!undo_collapses(surface, coarse, copy.chart, copy.x, state.chart, carried)) return 0;
+  int charts = 0;
+  const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
+  for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
+    if(carried.valid[std::size_t(chart_of_face[f])])
+      for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = carried.x.segment<2>(2 * v);
+  return int(std::count(carried.valid.begin(), carried.valid.end(), char(1)));
 }
 
 } // namespace cut
