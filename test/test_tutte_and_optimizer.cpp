@@ -545,6 +545,14 @@ TEST(TutteAndOptimizer, hessian_assembler_merged_pattern_equals_a_fresh_one)
     EXPECT_TRUE(std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr()));
     EXPECT_TRUE(std::equal(a.valuePtr(), a.valuePtr() + a.nonZeros(), b.valuePtr()));
     EXPECT_EQ(kept.mean_diagonal(), fresh.mean_diagonal());
+    // each column's rows strictly increasing, from its diagonal down (the solvers' compressed storage)
+    for(int c = 0; c < a.cols(); ++c)
+    {
+      ASSERT_LT(a.outerIndexPtr()[c], a.outerIndexPtr()[c + 1]);
+      EXPECT_EQ(a.innerIndexPtr()[a.outerIndexPtr()[c]], c);
+      for(int k = a.outerIndexPtr()[c] + 1; k < a.outerIndexPtr()[c + 1]; ++k)
+        EXPECT_LT(a.innerIndexPtr()[k - 1], a.innerIndexPtr()[k]);
+    }
     // the lower triangle and full diagonal of the sum of the blocks
     Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(dimension, dimension);
     for(int d = 0; d < dimension; ++d) dense(d, d) = 0.5;

@@ -38,7 +38,7 @@ class Hessian_assembler
   std::vector<int> base_outer_, base_inner_; // compressed columns, lower triangle
   std::vector<int> base_slots_, base_diagonal_; // slots of its elements and diagonal within it
   std::vector<int> base_to_new_;             // index of each of its entries in matrix_
-  std::vector<int> extra_start_, extra_rows_, fill_; // the other elements' entries, by column
+  std::vector<int> extra_start_, extra_rows_, fill_; // entries merged in, by column
   std::vector<int> outer_, inner_;                   // the merged pattern
 
 public:
@@ -79,7 +79,8 @@ public:
     const std::size_t base_slots = base_slots_.size();
     for(std::size_t s = 0; s < base_slots; ++s)
       slots_[s] = base_slots_[s] < 0 ? -1 : base_to_new_[std::size_t(base_slots_[s])];
-    for(std::size_t e = base_elements_; e < elements; ++e) element_slots(e, slots_.data() + slot_start_[e]);
+    for(std::size_t e = base_elements_; e < elements; ++e)
+      element_slots(e, matrix_.outerIndexPtr(), matrix_.innerIndexPtr(), slots_.data() + slot_start_[e]);
     diagonal_slots_.resize(std::size_t(dimension));
     for(std::size_t d = 0; d < std::size_t(dimension); ++d) diagonal_slots_[d] = base_to_new_[std::size_t(base_diagonal_[d])];
   }
@@ -139,83 +140,24 @@ private:
     base_elements_ = elements;
     base_dof_start_.assign(dof_start_.begin(), dof_start_.begin() + std::ptrdiff_t(elements) + 1);
     base_dofs_.assign(dofs_.begin(), dofs_.begin() + base_dof_start_.back());
-    std::size_t count = std::size_t(dimension_);
-    for(std::size_t e = 0; e < elements; ++e)
-    {
-      const std::size_t n = std::size_t(base_dof_start_[e + 1] - base_dof_start_[e]);
-      count += n * (n + 1) / 2;
-    }
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(count); // grown by doubling, a large part of a new pattern's time at 160k faces
-    for(int d = 0; d < dimension_; ++d) entries.emplace_back(d, d, 0.);
-    for(std::size_t e = 0; e < elements; ++e)
-      for(int i = base_dof_start_[e]; i < base_dof_start_[e + 1]; ++i)
-        for(int j = base_dof_start_[e]; j < base_dof_start_[e + 1]; ++j)
-          if(base_dofs_[std::size_t(i)] >= base_dofs_[std::size_t(j)])
-            entries.emplace_back(base_dofs_[std::size_t(i)], base_dofs_[std::size_t(j)], 0.);
-    matrix_.resize(dimension_, dimension_);
-    matrix_.setFromTriplets(entries.begin(), entries.end());
-    matrix_.makeCompressed();
-    base_outer_.assign(matrix_.outerIndexPtr(), matrix_.outerIndexPtr() + dimension_ + 1);
-    base_inner_.assign(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + matrix_.nonZeros());
+    const std::size_t columns = std::size_t(dimension_);
+    std::vector<int> diagonal_outer(columns + 1), diagonal_inner(columns);
+    for(int d = 0; d <= dimension_; ++d) diagonal_outer[std::size_t(d)] = d;
+    for(int d = 0; d < dimension_; ++d) diagonal_inner[std::size_t(d)] = d;
+    merge(0, elements, diagonal_outer, diagonal_inner, base_outer_, base_inner_, base_diagonal_);
     base_slots_.clear();
     for(std::size_t e = 0; e < elements; ++e)
     {
       const std::size_t n = std::size_t(base_dof_start_[e + 1] - base_dof_start_[e]);
       base_slots_.resize(base_slots_.size() + n * n);
-      element_slots(e, base_slots_.data() + base_slots_.size() - n * n);
+      element_slots(e, base_outer_.data(), base_inner_.data(), base_slots_.data() + base_slots_.size() - n * n);
     }
-    base_diagonal_.resize(std::size_t(dimension_));
-    for(int d = 0; d < dimension_; ++d) base_diagonal_[std::size_t(d)] = slot(d, d);
   }
 
-  /// matrix_: the kept pattern with the entries of the elements after it
-  /// (bucketed by column, each column's rows sorted, then merged).
+  /// matrix_: the kept pattern with the entries of the elements after it.
   void merge_others()
   {
-    const std::size_t elements = dof_start_.size() - 1, columns = std::size_t(dimension_);
-    extra_start_.assign(columns + 1, 0);
-    auto for_each_extra = [&](auto&& f) {
-      for(std::size_t e = base_elements_; e < elements; ++e)
-        for(int i = dof_start_[e]; i < dof_start_[e + 1]; ++i)
-          for(int j = dof_start_[e]; j < dof_start_[e + 1]; ++j)
-            if(dofs_[std::size_t(i)] >= dofs_[std::size_t(j)]) f(dofs_[std::size_t(j)], dofs_[std::size_t(i)]);
-    };
-    for_each_extra([&](int col, int) { ++extra_start_[std::size_t(col) + 1]; });
-    for(std::size_t c = 0; c < columns; ++c) extra_start_[c + 1] += extra_start_[c];
-    extra_rows_.resize(std::size_t(extra_start_[columns]));
-    fill_.assign(extra_start_.begin(), extra_start_.end() - 1);
-    for_each_extra([&](int col, int row) { extra_rows_[std::size_t(fill_[std::size_t(col)]++)] = row; });
-
-    base_to_new_.resize(base_inner_.size());
-    outer_.assign(columns + 1, 0);
-    inner_.clear();
-    inner_.reserve(base_inner_.size() + extra_rows_.size());
-    for(std::size_t col = 0; col < columns; ++col)
-    {
-      int* x = extra_rows_.data() + extra_start_[col];
-      int* const x_end = extra_rows_.data() + extra_start_[col + 1];
-      std::sort(x, x_end);
-      int b = base_outer_[col];
-      const int b_end = base_outer_[col + 1];
-      while(b < b_end || x != x_end)
-      {
-        if(x == x_end || (b < b_end && base_inner_[std::size_t(b)] <= *x))
-        {
-          const int row = base_inner_[std::size_t(b)];
-          while(x != x_end && *x == row) ++x;
-          base_to_new_[std::size_t(b++)] = int(inner_.size());
-          inner_.push_back(row);
-        }
-        else
-        {
-          const int row = *x;
-          while(x != x_end && *x == row) ++x;
-          inner_.push_back(row);
-        }
-      }
-      outer_[col + 1] = int(inner_.size());
-    }
+    merge(base_elements_, dof_start_.size() - 1, base_outer_, base_inner_, outer_, inner_, base_to_new_);
     matrix_.resize(dimension_, dimension_);
     matrix_.resizeNonZeros(Eigen::Index(inner_.size()));
     std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());
@@ -223,20 +165,60 @@ private:
     set_zero();
   }
 
-  /// The slots of element e of the current elements in matrix_.
-  void element_slots(std::size_t e, int* out) const
+  /// The compressed lower-triangle pattern (`outer`, `inner`) with the
+  /// entries of elements [first, end) merged in (bucketed by column, each
+  /// column's rows sorted), into (`merged_outer`, `merged_inner`); `map`:
+  /// the index in it of each entry of the pattern given.
+  void merge(std::size_t first, std::size_t end, const std::vector<int>& outer, const std::vector<int>& inner,
+             std::vector<int>& merged_outer, std::vector<int>& merged_inner, std::vector<int>& map)
+  {
+    const std::size_t columns = std::size_t(dimension_);
+    extra_start_.assign(columns + 1, 0);
+    auto for_each_entry = [&](auto&& f) {
+      for(std::size_t e = first; e < end; ++e)
+        for(int i = dof_start_[e]; i < dof_start_[e + 1]; ++i)
+          for(int j = dof_start_[e]; j < dof_start_[e + 1]; ++j)
+            if(dofs_[std::size_t(i)] >= dofs_[std::size_t(j)]) f(dofs_[std::size_t(j)], dofs_[std::size_t(i)]);
+    };
+    for_each_entry([&](int col, int) { ++extra_start_[std::size_t(col) + 1]; });
+    for(std::size_t c = 0; c < columns; ++c) extra_start_[c + 1] += extra_start_[c];
+    extra_rows_.resize(std::size_t(extra_start_[columns]));
+    fill_.assign(extra_start_.begin(), extra_start_.end() - 1);
+    for_each_entry([&](int col, int row) { extra_rows_[std::size_t(fill_[std::size_t(col)]++)] = row; });
+
+    map.resize(inner.size());
+    merged_outer.assign(columns + 1, 0);
+    merged_inner.clear();
+    merged_inner.reserve(inner.size() + extra_rows_.size());
+    for(std::size_t col = 0; col < columns; ++col)
+    {
+      int* x = extra_rows_.data() + extra_start_[col];
+      int* const x_end = extra_rows_.data() + extra_start_[col + 1];
+      std::sort(x, x_end);
+      int b = outer[col];
+      const int b_end = outer[col + 1];
+      while(b < b_end || x != x_end)
+      {
+        const bool from_pattern = x == x_end || (b < b_end && inner[std::size_t(b)] <= *x);
+        const int row = from_pattern ? inner[std::size_t(b)] : *x;
+        while(x != x_end && *x == row) ++x;
+        if(from_pattern) map[std::size_t(b++)] = int(merged_inner.size());
+        merged_inner.push_back(row);
+      }
+      merged_outer[col + 1] = int(merged_inner.size());
+    }
+  }
+
+  /// The slots of element e of the current elements in the pattern (`outer`, `inner`).
+  void element_slots(std::size_t e, const int* outer, const int* inner, int* out) const
   {
     const int* dofs = dofs_.data() + dof_start_[e];
     const std::size_t n = std::size_t(dof_start_[e + 1] - dof_start_[e]);
     for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t j = 0; j < n; ++j) out[i * n + j] = dofs[i] >= dofs[j] ? slot(dofs[i], dofs[j]) : -1;
-  }
-
-  int slot(int row, int col) const
-  {
-    const int* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col];
-    const int* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col + 1];
-    return int(std::lower_bound(begin, end, row) - matrix_.innerIndexPtr());
+      for(std::size_t j = 0; j < n; ++j)
+        out[i * n + j] = dofs[i] >= dofs[j]
+                           ? int(std::lower_bound(inner + outer[dofs[j]], inner + outer[dofs[j] + 1], dofs[i]) - inner)
+                           : -1;
   }
 };
 
