@@ -39,6 +39,8 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <ctime>
+#include <time.h> // clock_gettime
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -61,13 +63,26 @@ namespace fs = std::filesystem;
 // Ctrl-C (SIGINT) or SIGTERM: the unwrapping in progress stops at its next
 // progress report (ERROR_CANCELED), nothing more is written, the outputs of
 // the input in progress are removed, and uv_unwrap exits with
-// exit_status_interrupted. A second signal ends the process at once.
+// exit_status_interrupted. A second signal a second or more after the first
+// ends the process at once; one sooner is the same request repeated
+// (coreutils' timeout signals the process, then its process group).
 volatile std::sig_atomic_t interrupted = 0;
+std::timespec first_interrupt{};
 constexpr int exit_status_interrupted = 130; // 128 + SIGINT, as shells report it
 void on_interrupt(int signal_number)
 {
-  interrupted = 1;
+  std::timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now); // async-signal-safe (POSIX)
+  if(!interrupted)
+  {
+    first_interrupt = now;
+    interrupted = 1;
+    return;
+  }
+  const double since_first = double(now.tv_sec - first_interrupt.tv_sec) + 1e-9 * double(now.tv_nsec - first_interrupt.tv_nsec);
+  if(since_first < 1.0) return;
   std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
 }
 
 using Kernel = mesh_input::Kernel;
