@@ -39,8 +39,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
-#include <ctime>
-#include <time.h> // clock_gettime
+#include <time.h> // clock_gettime (POSIX)
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -67,19 +66,20 @@ namespace fs = std::filesystem;
 // ends the process at once; one sooner is the same request repeated
 // (coreutils' timeout signals the process, then its process group).
 volatile std::sig_atomic_t interrupted = 0;
-std::timespec first_interrupt{};
+timespec first_interrupt{};
 constexpr int exit_status_interrupted = 130; // 128 + SIGINT, as shells report it
 void on_interrupt(int signal_number)
 {
-  std::timespec now{};
-  ::clock_gettime(CLOCK_MONOTONIC, &now); // async-signal-safe (POSIX)
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now); // async-signal-safe
   if(!interrupted)
   {
     first_interrupt = now;
     interrupted = 1;
     return;
   }
-  const double since_first = double(now.tv_sec - first_interrupt.tv_sec) + 1e-9 * double(now.tv_nsec - first_interrupt.tv_nsec);
+  const double since_first =
+    double(now.tv_sec - first_interrupt.tv_sec) + 1e-9 * double(now.tv_nsec - first_interrupt.tv_nsec);
   if(since_first < 1.0) return;
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
