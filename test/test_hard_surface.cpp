@@ -116,6 +116,23 @@ TEST(Hard_surface, a_plate_cut_into_many_pieces_gets_no_box)
   EXPECT_LT(run.result.newton_iterations, std::size_t(250)); // measured: 143 (376 with the box)
 }
 
+// A CAD part cut on a simplified copy (here above 2000 faces) starts its
+// final solve from its Tutte map, as one cut at full resolution: from that
+// map, with its holes on one circle, the copy's solve under the barrier
+// (start_from_solved_copy()) crawled (531 Newton iterations for this plate,
+// 12 s; the fast preset cuts on a copy from 5000 faces up).
+TEST(Hard_surface, a_plate_cut_on_a_copy_gives_a_valid_atlas_without_the_copys_solve)
+{
+  const Surface_mesh plate = cut_benchmark::hard_surface::plate(8, 6, 64, 0.1);
+  ASSERT_GT(num_faces(plate), std::size_t(2000));
+  Cut_run<Surface_mesh> run(plate);
+  run.run(SMP::parameters::multiresolution_faces(1000));
+  check_cut_result(plate, run);
+  EXPECT_EQ(run.result.border_crossings, std::size_t(0));
+  EXPECT_LE(run.result.distortion, ic::tuning::default_distortion_target);
+  EXPECT_LT(run.result.newton_iterations, std::size_t(300)); // measured: 150 (531 from the copy's solve)
+}
+
 // On a hard-surface part the barrier's solve of charts cut into overlap-free
 // pieces is capped (Final_solve_args::pieces_max_iterations, set by the
 // plan's final_args_on()): the plate's one chart, solved from its Tutte map
