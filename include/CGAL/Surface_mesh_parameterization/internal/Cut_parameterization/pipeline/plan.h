@@ -284,7 +284,8 @@ Error_code final_solve_rerouted(const Surface& surface, const Final_solve_args& 
 /// The method from `state.is_cut` (seams given by the user) up to the
 /// solved cut mesh under `run`: where to cut (on a simplified copy for large
 /// meshes), the final solve (from a copy of the cut mesh solved and carried
-/// back, start_from_solved_copy(), where the cuts came from a copy; the
+/// back, start_from_solved_copy(), where the cuts came from a copy and the
+/// mesh is not a hard-surface part, is_hard_surface(); the
 /// alternation's seams rerouted beside it where it ran on this mesh, up to
 /// two states at once), the greedy splits;
 /// `state.distortion` is its E_d. The charts are not packed yet.
