@@ -306,7 +306,7 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   Final_solve_args final = final_args_on(surface, run.final);
   if(coarse) final.box.tolerance = tuning::large_mesh_box_tolerance;
   // cut on a copy, the input starts from a copy of its cut mesh solved and carried back; not a CAD
-  // part: its holes squashed on one circle, the copy's solve under the barrier crawled (12x10 holes 8 -> 130 s)
+  // part: from its Tutte map, holes on one circle, the copy's solve under the barrier crawls
   if(coarse && !is_hard_surface(surface))
     start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces), final, state, log);
   // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)
