@@ -188,3 +188,40 @@ TEST(Hard_surface, the_pieces_solve_is_capped_on_a_hard_surface_and_stays_valid)
   EXPECT_TRUE(valid(tuned));
   EXPECT_LE(ic::mean_distortion(tuned.chart, tuned.x), ic::tuning::default_distortion_target);
 }
+
+// Under the fast preset the cuts of a mesh above 5000 faces are decided on a
+// copy of fast_multiresolution_faces faces, which cannot hold a CAD part's
+// holes and creases (the plate with 20x16 holes: E_d 10.7 against 4.2 by
+// default). The plan gives a hard-surface part the default's copy; an
+// organic mesh of the same size, and the default preset, keep theirs.
+TEST(Hard_surface, the_fast_preset_gives_a_hard_surface_part_the_default_copy)
+{
+  const int default_faces = SMP::Cut_parameterization_options().multiresolution_faces;
+  SMP::Cut_parameterization_options fast;
+  fast.preset = SMP::Preset::FAST;
+  fast = SMP::with_preset(fast);
+  ASSERT_EQ(fast.multiresolution_faces, SMP::fast_multiresolution_faces);
+  ASSERT_LT(SMP::fast_multiresolution_faces, default_faces);
+
+  const Surface_mesh plate = cut_benchmark::hard_surface::plate(8, 6, 64, 0.1);
+  ic::Indexed_surface<Surface_mesh> plate_surface;
+  ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), plate_surface) == ic::Indexing_status::OK);
+  ASSERT_GT(plate_surface.number_of_faces(), std::size_t(2 * SMP::fast_multiresolution_faces));
+  EXPECT_EQ(ic::options_on(plate_surface, fast).multiresolution_faces, default_faces);
+  SMP::Cut_parameterization_options small_copy = fast; // a copy even smaller, asked for
+  small_copy.multiresolution_faces = 700;
+  EXPECT_EQ(ic::options_on(plate_surface, small_copy).multiresolution_faces, default_faces);
+  SMP::Cut_parameterization_options none = fast; // no copy, asked for
+  none.multiresolution_faces = 0;
+  EXPECT_EQ(ic::options_on(plate_surface, none).multiresolution_faces, 0);
+  const SMP::Cut_parameterization_options defaults;
+  SMP::Cut_parameterization_options small_default = defaults;
+  small_default.multiresolution_faces = 700;
+  EXPECT_EQ(ic::options_on(plate_surface, small_default).multiresolution_faces, 700);
+
+  const Surface_mesh sphere = make_mesh<Surface_mesh>(sphere_soup(30));
+  ic::Indexed_surface<Surface_mesh> sphere_surface;
+  ASSERT_TRUE(ic::index_surface(sphere, get(CGAL::vertex_point, sphere), sphere_surface) == ic::Indexing_status::OK);
+  ASSERT_GT(sphere_surface.number_of_faces(), std::size_t(2 * SMP::fast_multiresolution_faces));
+  EXPECT_EQ(ic::options_on(sphere_surface, fast).multiresolution_faces, SMP::fast_multiresolution_faces);
+}

@@ -464,16 +464,31 @@ Error_code default_target_run(const Surface& surface, const std::vector<double>&
   return OK;
 }
 
+/// The options of the run on `surface` (those of with_preset()): under the
+/// fast preset, a hard-surface part (is_hard_surface()) gets the default's
+/// copy (`multiresolution_faces` not below its default value): a copy of
+/// fast_multiresolution_faces faces cannot hold its holes and creases.
+template <typename Surface>
+Cut_parameterization_options options_on(const Surface& surface, Cut_parameterization_options o)
+{
+  const int default_faces = Cut_parameterization_options().multiresolution_faces;
+  if(o.preset == Preset::FAST && o.multiresolution_faces > 0 && o.multiresolution_faces < default_faces
+     && 2 * std::size_t(o.multiresolution_faces) < surface.number_of_faces() && is_hard_surface(surface))
+    o.multiresolution_faces = default_faces;
+  return o;
+}
+
 /// The plan of cut_and_parameterize(): from `state.is_cut` (the user's
 /// seams) and `state.rules`, the bound search where the options ask for a
 /// bound, else the default target run; then the packing. `log` gets the
 /// work of every stage.
 template <typename Surface>
 Error_code run_plan(const Surface& surface, const std::vector<double>& face_lambda,
-                    const Cut_parameterization_options& o, Map_state& state, Work_log& log, Packing_result& packing,
-                    bool& bound_met)
+                    const Cut_parameterization_options& preset_options, Map_state& state, Work_log& log,
+                    Packing_result& packing, bool& bound_met)
 {
-  if(!valid_options(o)) return ERROR_WRONG_PARAMETER;
+  if(!valid_options(preset_options)) return ERROR_WRONG_PARAMETER;
+  const Cut_parameterization_options o = options_on(surface, preset_options);
   const Progress& progress = o.progress_callback;
   const Run_args run = default_run_args(o);
   if(!(o.distortion_bound > 0.)) return default_target_run(surface, face_lambda, o, progress, run, state, log, packing);
