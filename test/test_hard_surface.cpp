@@ -189,6 +189,49 @@ TEST(Hard_surface, the_pieces_solve_is_capped_on_a_hard_surface_and_stays_valid)
   EXPECT_LE(ic::mean_distortion(tuned.chart, tuned.x), ic::tuning::default_distortion_target);
 }
 
+// The cap is for an E_d that has settled: the plate with 3x2 holes cut into
+// overlap-free pieces, each restarted from its Tutte map (E_d far above the
+// target, as a crossing piece restarts); capped at a few iterations, their
+// solve goes on a cap at a time while E_d stays above the default target
+// and falls, and ends below it, valid (one round stops above it).
+TEST(Hard_surface, a_capped_pieces_solve_goes_on_while_its_distortion_is_above_the_target)
+{
+  const Surface_mesh plate = cut_benchmark::hard_surface::plate(3, 2, 64, 0.1);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), surface) == ic::Indexing_status::OK);
+  ic::Map_state state;
+  state.is_cut.assign(surface.edges.size(), 0);
+  ASSERT_TRUE(ic::initial_map(surface, state) == SMP::OK);
+  ic::Final_solve_args args = ic::final_args_on(surface, ic::Final_solve_args{});
+  args.box = ic::Box{}; // the pieces' solve alone
+  const int cap = 4;
+  args.pieces_max_iterations = cap;
+  ic::Work_log log;
+  ic::Unboxed_final_map unboxed;
+  ASSERT_TRUE(ic::final_solve_without_box(surface, args, true, state, log, unboxed) == SMP::OK);
+  ASSERT_GT(unboxed.pieces, 1);
+  // every piece from its Tutte map, as restart_crossing_charts() puts a crossing one
+  ASSERT_TRUE(ic::disk_charts_embedding(state.chart, state.x) == ic::Embedding_status::OK);
+  ASSERT_GT(ic::mean_distortion(state.chart, state.x), ic::tuning::default_distortion_target);
+  unboxed.restart = true;
+  ic::Map_state once = state; // one round of `cap` iterations: above the target
+  {
+    ic::Final_solve_args one_round = args;
+    one_round.max_iterations = cap;
+    ic::Work_log l;
+    ASSERT_TRUE(ic::final_solve_box(one_round, unboxed, once, l) == SMP::OK);
+    ASSERT_GT(ic::mean_distortion(once.chart, once.x), ic::tuning::default_distortion_target);
+  }
+  const std::size_t before = log.final_work.iterations;
+  ASSERT_TRUE(ic::final_solve_box(args, unboxed, state, log) == SMP::OK);
+  EXPECT_GT(log.final_work.iterations - before, std::size_t(cap));
+  EXPECT_LE(log.final_work.iterations - before, std::size_t(args.max_iterations));
+  EXPECT_LE(ic::mean_distortion(state.chart, state.x), ic::tuning::default_distortion_target);
+  const std::vector<char> crossing = ic::Border_barrier_term(state.chart).charts_with_crossing(state.x);
+  EXPECT_TRUE(ic::is_valid_atlas(surface, state));
+  EXPECT_EQ(std::count(crossing.begin(), crossing.end(), char(1)), 0);
+}
+
 // Under the fast preset the cuts of a mesh above 5000 faces are decided on a
 // copy of fast_multiresolution_faces faces, which cannot hold a CAD part's
 // holes and creases (the plate with 20x16 holes: E_d 10.7 against 4.2 by

@@ -209,8 +209,9 @@ constexpr double hard_surface_crease_degrees = 60.;
 constexpr int hard_surface_split_batch = 12;
 /// ... and up to this many per round (each round ends in a final solve under the barrier)
 constexpr int hard_surface_max_splits = 256;
-/// Newton iterations at most of its barrier's solve of charts cut into overlap-free pieces: E_d settles
-/// within them while the barrier still pushes border pairs apart (plate with 12x10 holes: 46)
+/// Newton iterations at most of its barrier's solve of charts cut into overlap-free pieces, per round
+/// while E_d is above default_distortion_target: E_d settles within them while the barrier still
+/// pushes border pairs apart (plate with 12x10 holes: 46)
 constexpr int hard_surface_pieces_newton_iterations = 20;
 /// on a large mesh every trial solves the whole map: splits go in batches of one
 /// per multiresolution_faces faces, at most this many

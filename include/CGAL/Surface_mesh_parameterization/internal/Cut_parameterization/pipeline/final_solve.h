@@ -57,7 +57,8 @@ struct Final_solve_args
   int box_max_pieces = tuning::box_max_pieces;
   int max_iterations = 500;
   // Newton iterations at most of the barrier's solve without box of charts cut into overlap-free
-  // pieces (0: max_iterations; hard-surface parts, pipeline/plan.h: E_d settles long before the barrier)
+  // pieces, per round while E_d is above the default target (0: max_iterations; hard-surface parts,
+  // pipeline/plan.h: E_d settles long before the barrier)
   int pieces_max_iterations = 0;
   Inner_solver solver = Inner_solver::NEWTON;
   double tolerance_factor = 1.; // the Newton tolerances below times this (Preset::FAST)
@@ -261,7 +262,9 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
 /// weakened, then dropped: the map without box is the result. No box where
 /// the final solve cut the charts into more than `args.box_max_pieces` pieces.
 /// Where the charts were cut into pieces, the solve without box does at
-/// most `args.pieces_max_iterations` Newton iterations if that is above 0.
+/// most `args.pieces_max_iterations` Newton iterations if that is above 0,
+/// and as many again (within `args.max_iterations`) while it ran to that cap,
+/// lowered E_d and left it above tuning::default_distortion_target.
 inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_final_map& unboxed, Map_state& state,
                                   Work_log& log)
 {
@@ -274,17 +277,34 @@ inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_fi
   if(unboxed.pieces > 0 && args.pieces_max_iterations > 0)
     unboxed_args.max_iterations = (std::min)(args.max_iterations, args.pieces_max_iterations);
   auto solve = [&](double s) { return final_minimization(s > 0. ? args : unboxed_args, barrier, s, true, state, log); };
+  // the capped solve without box goes on, a cap at a time, while E_d stays above the default
+  // target and a round ran to its cap and lowered it: the cap is for an E_d that has settled
+  auto solve_unboxed = [&] {
+    const bool capped = unboxed_args.max_iterations < args.max_iterations;
+    double before = capped ? mean_distortion(state.chart, state.x) : 0.;
+    for(int done = 0;; done += unboxed_args.max_iterations)
+    {
+      const std::size_t iterations = log.final_work.iterations;
+      const Error_code status = solve(0.);
+      if(status != OK || !capped || done + 2 * unboxed_args.max_iterations > args.max_iterations) return status;
+      const double after = mean_distortion(state.chart, state.x);
+      if(log.final_work.iterations - iterations < std::size_t(unboxed_args.max_iterations)
+         || !(after > tuning::default_distortion_target && after < before))
+        return status;
+      before = after;
+    }
+  };
   Error_code status = OK;
   double unboxed_distortion = unboxed.distortion;
   if(unboxed.restart && stiffness > 0.)
   {
-    status = solve(0.);
+    status = solve_unboxed();
     unboxed_distortion = mean_distortion(state.chart, state.x);
   }
   // the map without box, converged: where the box is dropped, the result
   UV_vector without_box;
   if(stiffness > 0.) without_box = state.x;
-  if(status == OK && (unboxed.restart || stiffness > 0.)) status = solve(stiffness);
+  if(status == OK && (unboxed.restart || stiffness > 0.)) status = stiffness > 0. ? solve(stiffness) : solve_unboxed();
   // the box's cost in distortion, over the map without box, stays within the budget
   // and below the ceiling where the map without box is
   const double ceiling = unboxed_distortion <= args.box.ceiling ? args.box.ceiling
