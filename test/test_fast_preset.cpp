@@ -55,3 +55,16 @@ TEST(FastPreset, fast_run_gives_a_valid_atlas)
   ASSERT_EQ(run.result.error, SMP::OK);
   check_cut_result(mesh, run);
 }
+
+// Above 2 x fast_multiresolution_faces faces the preset decides the cuts on
+// a simplified copy: the atlas keeps every guarantee there too.
+TEST(FastPreset, fast_run_cut_on_a_copy_gives_a_valid_atlas)
+{
+  Surface_mesh mesh;
+  build_mesh(hemisphere_soup(24, 64), mesh);
+  ASSERT_GT(num_faces(mesh), std::size_t(2 * SMP::fast_multiresolution_faces));
+  Cut_run<Surface_mesh> run(mesh);
+  run.run(SMP::parameters::preset(SMP::Preset::FAST));
+  ASSERT_EQ(run.result.error, SMP::OK);
+  check_cut_result(mesh, run);
+}

@@ -120,7 +120,7 @@ TEST(Hard_surface, a_plate_cut_into_many_pieces_gets_no_box)
 // final solve from its Tutte map, as one cut at full resolution: from that
 // map, with its holes on one circle, the copy's solve under the barrier
 // (start_from_solved_copy()) crawled (531 Newton iterations for this plate,
-// 12 s; the fast preset cuts on a copy from 5000 faces up).
+// 12 s; the fast preset cuts on a copy from 2000 faces up).
 TEST(Hard_surface, a_plate_cut_on_a_copy_gives_a_valid_atlas_without_the_copys_solve)
 {
   const Surface_mesh plate = cut_benchmark::hard_surface::plate(8, 6, 64, 0.1);
@@ -232,7 +232,7 @@ TEST(Hard_surface, a_capped_pieces_solve_goes_on_while_its_distortion_is_above_t
   EXPECT_EQ(std::count(crossing.begin(), crossing.end(), char(1)), 0);
 }
 
-// Under the fast preset the cuts of a mesh above 5000 faces are decided on a
+// Under the fast preset the cuts of a mesh above 2000 faces are decided on a
 // copy of fast_multiresolution_faces faces, which cannot hold a CAD part's
 // holes and creases (the plate with 20x16 holes: E_d 10.7 against 4.2 by
 // default). The plan gives a hard-surface part the default's copy; an

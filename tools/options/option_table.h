@@ -123,7 +123,7 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "the largest E_d increase the box may cost before it is weakened, then dropped (default 0.045 for the "         \
     "default box, no limit for a box asked for)")                                                                   \
   X(preset, CHOICE, "--preset", "preset", "preset", 0., false, 1., "default|fast", "Method",                        \
-    "default: quality first; fast: for interactive use (cuts decided on a simplified copy above 5000 faces, no "    \
+    "default: quality first; fast: for interactive use (cuts decided on a simplified copy above 2000 faces, no "    \
     "seam rerouting, looser final tolerances, no search for the default distortion target; the same guarantees)")
 
 /// One row of the table.

@@ -166,7 +166,7 @@ constexpr double gentle_bounding_box_distortion_budget = 0.045;
 /// `multiresolution_faces` at most under `Preset::FAST`: the cuts of a mesh
 /// above twice this many faces are decided on a copy of about this size
 /// (measured in the manual, \ref Cut_parameterization_fast_preset).
-constexpr int fast_multiresolution_faces = 2500;
+constexpr int fast_multiresolution_faces = 1000;
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -250,9 +250,9 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
 /// \ingroup PkgCutParameterizationRef
 /// The options that a run of `cut_and_parameterize()` uses: `o` itself,
 /// except with `o.preset == Preset::FAST`, where `multiresolution_faces`
-/// (unless 0) is capped at `fast_multiresolution_faces` (2500), so that the
-/// cuts of a mesh above 5000 faces are decided on a copy simplified to about
-/// 2500 faces (the plan gives a hard-surface part the default's copy
+/// (unless 0) is capped at `fast_multiresolution_faces` (1000), so that the
+/// cuts of a mesh above 2000 faces are decided on a copy simplified to about
+/// 1000 faces (the plan gives a hard-surface part the default's copy
 /// back: \ref Cut_parameterization_fast_preset). The other parts of the preset (no
 /// rerouting of the seams, looser final tolerances, no search for the
 /// default distortion target) are the plan's.
