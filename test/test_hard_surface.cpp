@@ -26,6 +26,22 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace ic = SMP::internal::cut;
 using namespace cut_test;
 
+// The plate with 3x2 holes, indexed, and its initial cut mesh with its
+// Tutte map (the start of the pieces' tests).
+struct Plate_start
+{
+  Surface_mesh plate = cut_benchmark::hard_surface::plate(3, 2, 64, 0.1);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ic::Map_state start;
+
+  bool make()
+  {
+    if(ic::index_surface(plate, get(CGAL::vertex_point, plate), surface) != ic::Indexing_status::OK) return false;
+    start.is_cut.assign(surface.edges.size(), 0);
+    return ic::initial_map(surface, start) == SMP::OK;
+  }
+};
+
 // The Tutte map of a plate with holes, cut into one disk, is too distorted
 // for the barrier's solve; a disk without holes is not.
 TEST(Hard_surface, a_tutte_map_of_holes_on_one_circle_is_too_distorted_for_the_barrier)
@@ -142,12 +158,10 @@ TEST(Hard_surface, a_plate_cut_on_a_copy_gives_a_valid_atlas_without_the_copys_s
 // uncapped E_d. An organic mesh keeps the uncapped solve.
 TEST(Hard_surface, the_pieces_solve_is_capped_on_a_hard_surface_and_stays_valid)
 {
-  const Surface_mesh plate = cut_benchmark::hard_surface::plate(3, 2, 64, 0.1);
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), surface) == ic::Indexing_status::OK);
-  ic::Map_state start;
-  start.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_TRUE(ic::initial_map(surface, start) == SMP::OK);
+  Plate_start p;
+  ASSERT_TRUE(p.make());
+  const ic::Indexed_surface<Surface_mesh>& surface = p.surface;
+  const ic::Map_state& start = p.start;
   const ic::Final_solve_args defaults;
   EXPECT_EQ(defaults.pieces_max_iterations, 0);
   const ic::Final_solve_args args = ic::final_args_on(surface, defaults);
@@ -196,12 +210,10 @@ TEST(Hard_surface, the_pieces_solve_is_capped_on_a_hard_surface_and_stays_valid)
 // and falls, and ends below it, valid (one round stops above it).
 TEST(Hard_surface, a_capped_pieces_solve_goes_on_while_its_distortion_is_above_the_target)
 {
-  const Surface_mesh plate = cut_benchmark::hard_surface::plate(3, 2, 64, 0.1);
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), surface) == ic::Indexing_status::OK);
-  ic::Map_state state;
-  state.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_TRUE(ic::initial_map(surface, state) == SMP::OK);
+  Plate_start p;
+  ASSERT_TRUE(p.make());
+  const ic::Indexed_surface<Surface_mesh>& surface = p.surface;
+  ic::Map_state state = p.start;
   ic::Final_solve_args args = ic::final_args_on(surface, ic::Final_solve_args{});
   args.box = ic::Box{}; // the pieces' solve alone
   const int cap = 4;
