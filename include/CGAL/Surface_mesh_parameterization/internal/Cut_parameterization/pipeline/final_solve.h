@@ -280,17 +280,17 @@ inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_fi
   // the capped solve without box goes on, a cap at a time, while E_d stays above the default
   // target and a round ran to its cap and lowered it: the cap is for an E_d that has settled
   auto solve_unboxed = [&] {
-    const bool capped = unboxed_args.max_iterations < args.max_iterations;
-    double before = capped ? mean_distortion(state.chart, state.x) : 0.;
-    for(int done = 0;; done += unboxed_args.max_iterations)
+    const int cap = unboxed_args.max_iterations;
+    if(cap >= args.max_iterations) return solve(0.);
+    double before = mean_distortion(state.chart, state.x);
+    for(int done = cap;; done += cap)
     {
-      const std::size_t iterations = log.final_work.iterations;
+      const std::size_t start = log.final_work.iterations;
       const Error_code status = solve(0.);
-      if(status != OK || !capped || done + 2 * unboxed_args.max_iterations > args.max_iterations) return status;
       const double after = mean_distortion(state.chart, state.x);
-      if(log.final_work.iterations - iterations < std::size_t(unboxed_args.max_iterations)
-         || !(after > tuning::default_distortion_target && after < before))
-        return status;
+      const bool settled = log.final_work.iterations - start < std::size_t(cap)
+                           || !(after > tuning::default_distortion_target && after < before);
+      if(status != OK || settled || done + cap > args.max_iterations) return status;
       before = after;
     }
   };
