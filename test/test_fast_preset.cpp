@@ -2,7 +2,7 @@
 // documented (with_preset(): cuts decided on a copy of about
 // fast_multiresolution_faces faces; the plan: no rerouting,
 // final tolerances times tuning::fast_tolerance_factor, no default-target
-// search), the default left as it was, and a fast run that keeps every
+// search; the alternation: its u-steps after the first at that factor too), the default left as it was, and a fast run that keeps every
 // guarantee of the atlas (check_cut_result(): no flipped face, no crossing
 // border, no overlap, UVs in the unit square).
 #include "cut_result_checks.h"
@@ -54,6 +54,24 @@ TEST(FastPreset, fast_run_gives_a_valid_atlas)
   run.run(SMP::parameters::preset(SMP::Preset::FAST));
   ASSERT_EQ(run.result.error, SMP::OK);
   check_cut_result(mesh, run);
+}
+
+// After the first u-step (the same in both runs: it decides the cuts) the
+// preset's u-steps stop at tuning::fast_tolerance_factor times the
+// tolerance: on a mesh cut at full resolution under both, the alternation
+// does fewer Newton iterations, and the atlas keeps every guarantee.
+TEST(FastPreset, later_u_steps_stop_at_the_looser_tolerance)
+{
+  Surface_mesh mesh;
+  build_mesh(hemisphere_soup(12, 32), mesh);
+  ASSERT_LE(num_faces(mesh), std::size_t(2 * SMP::fast_multiresolution_faces)); // no copy under the preset
+  Cut_run<Surface_mesh> by_default(mesh), fast(mesh);
+  by_default.run();
+  fast.run(SMP::parameters::preset(SMP::Preset::FAST));
+  ASSERT_EQ(by_default.result.error, SMP::OK);
+  ASSERT_EQ(fast.result.error, SMP::OK);
+  EXPECT_LT(fast.result.alternation_newton_iterations, by_default.result.alternation_newton_iterations);
+  check_cut_result(mesh, fast);
 }
 
 // Above 2 x fast_multiresolution_faces faces the preset decides the cuts on

@@ -122,7 +122,8 @@ constexpr int v_step_cg_iterations = 200;
 constexpr double v_step_cg_tolerance = 1e-12;
 
 // ---- The fast preset (Preset::FAST; pipeline/plan.h, pipeline/final_solve.h)
-/// The final solves' Newton tolerances are multiplied by this: interactive use, the map is judged by eye.
+/// The final solves' Newton tolerances, and the alternation's after its first u-step, are multiplied by
+/// this: interactive use, the map is judged by eye.
 constexpr double fast_tolerance_factor = 10.;
 
 // ---- end of the solver section

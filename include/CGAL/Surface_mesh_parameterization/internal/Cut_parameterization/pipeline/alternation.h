@@ -31,7 +31,9 @@ namespace cut {
 
 /// The alternation's u-step number `alternation` (0: the first) with the
 /// weights v² + γ of `state.v`: a minimization from `state.x`, capped after
-/// the first (tuning::alternation_newton_iterations), stopped in a slow tail.
+/// the first (tuning::alternation_newton_iterations), stopped in a slow tail;
+/// after the first, under Preset::FAST, to tuning::fast_tolerance_factor
+/// times the tolerance.
 inline Error_code u_step(const Cut_parameterization_options& o, int alternation, Distortion_minimizer& minimizer,
                          Map_state& state, Work_log& log)
 {
@@ -45,7 +47,9 @@ inline Error_code u_step(const Cut_parameterization_options& o, int alternation,
   minimizer.set_step_growth(1.);
   const Slow_tail slow_tail{tuning::alternation_slow_tail_after, tuning::alternation_slow_tail_window,
                             tuning::alternation_slow_tail_ratio};
-  const Newton_report report = minimizer.minimize(state.x, cap, tuning::alternation_tolerance, slow_tail);
+  // the later u-steps only track v, the first decides the cuts (loosened too, it moved them)
+  const double factor = alternation > 0 && o.preset == Preset::FAST ? tuning::fast_tolerance_factor : 1.;
+  const Newton_report report = minimizer.minimize(state.x, cap, factor * tuning::alternation_tolerance, slow_tail);
   log.u_step_work += log.count(report);
   return report.ok() ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
 }
