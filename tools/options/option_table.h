@@ -124,7 +124,7 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
     "default box, no limit for a box asked for)")                                                                   \
   X(preset, CHOICE, "--preset", "preset", "preset", 0., false, 1., "default|fast", "Method",                        \
     "default: quality first; fast: for interactive use (cuts decided on a simplified copy above 2000 faces, no "    \
-    "seam rerouting, looser final tolerances, no search for the default distortion target; the same guarantees)")
+    "seam rerouting, looser Newton tolerances, no search for the default distortion target; the same guarantees)")
 
 /// One row of the table.
 struct Option_spec

@@ -194,7 +194,7 @@ namespace Surface_mesh_parameterization {
 ///     \cgalParamDescription{`Preset::FAST` for interactive use: the cuts decided on a copy
 ///       simplified to about `fast_multiresolution_faces` faces (above twice that size; a
 ///       hard-surface part keeps the default's copy), no
-///       rerouting of the seams, looser final tolerances, no search for the default
+///       rerouting of the seams, looser Newton tolerances, no search for the default
 ///       distortion target (`with_preset()`); the same guarantees
 ///       (\ref Cut_parameterization_fast_preset)}
 ///     \cgalParamType{`Preset`}

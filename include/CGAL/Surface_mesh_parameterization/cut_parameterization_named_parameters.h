@@ -37,7 +37,7 @@ enum class Preset
   /// quality first: the method as described, every stage
   DEFAULT,
   /// for interactive use: the cuts decided on a small simplified copy, no
-  /// rerouting of the seams, looser final tolerances, no search for the
+  /// rerouting of the seams, looser Newton tolerances, no search for the
   /// default distortion target; the same guarantees
   FAST
 };
