@@ -35,7 +35,7 @@ void initial_cut_and_copy(const ic::Indexed_surface<Surface_mesh>& surface, std:
   state.is_cut.assign(surface.edges.size(), 0);
   ASSERT_EQ(ic::initial_map(surface, state), SMP::OK);
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
-  ASSERT_TRUE(ic::simplify_surface(surface, state.is_cut, {}, face_lambda, faces, coarse, true));
+  ASSERT_TRUE(ic::simplify_for_carrying(surface, state.is_cut, {}, face_lambda, faces, coarse));
   ASSERT_FALSE(coarse.collapses.empty());
   coarse_state.is_cut = coarse.is_cut;
   ASSERT_EQ(ic::initial_map(coarse.surface, coarse_state), SMP::OK);
@@ -43,6 +43,48 @@ void initial_cut_and_copy(const ic::Indexed_surface<Surface_mesh>& surface, std:
 }
 
 } // namespace
+
+// The copy whose map is carried back (simplify_for_carrying()): about the
+// faces asked for, the input's seams kept as seams with their vertices,
+// every removed vertex recorded once, in a collapse into a vertex of its
+// star, and the copy a manifold indexed without defect.
+TEST(TwoLevels, the_carried_copy_keeps_the_seams_and_records_every_collapse)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Map_state state;
+  state.is_cut.assign(surface.edges.size(), 0);
+  ASSERT_EQ(ic::initial_map(surface, state), SMP::OK);
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Coarse_surface coarse;
+  ASSERT_TRUE(ic::simplify_for_carrying(surface, state.is_cut, {}, face_lambda, 1000, coarse));
+  const ic::Indexed_surface<ic::Coarse_mesh>& cs = coarse.surface;
+  EXPECT_NEAR(double(cs.number_of_faces()), 1000., 100.);
+  EXPECT_EQ(coarse.collapses.size(), surface.number_of_vertices() - cs.number_of_vertices());
+  const long seams = std::count(state.is_cut.begin(), state.is_cut.end(), char(1));
+  ASSERT_GT(seams, 0);
+  EXPECT_EQ(std::count(coarse.is_cut.begin(), coarse.is_cut.end(), char(1)), seams);
+  std::vector<char> kept(surface.number_of_vertices(), 0), removed(surface.number_of_vertices(), 0);
+  for(int v : coarse.fine_vertex) kept[std::size_t(v)] = 1;
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(state.is_cut[std::size_t(surface.edge_of[fe])]) EXPECT_TRUE(kept[std::size_t(surface.edge_source(fe))]);
+  for(const ic::Collapse& c : coarse.collapses)
+  {
+    EXPECT_FALSE(removed[std::size_t(c.removed)]);
+    removed[std::size_t(c.removed)] = 1;
+    EXPECT_FALSE(kept[std::size_t(c.removed)]);
+    bool kept_in_star = false;
+    for(const auto& s : c.star)
+    {
+      EXPECT_EQ(s[1], c.removed);
+      kept_in_star = kept_in_star || s[0] == c.kept || s[2] == c.kept;
+    }
+    EXPECT_TRUE(kept_in_star);
+    EXPECT_GE(c.star.size(), std::size_t(2));
+  }
+  EXPECT_EQ(coarse.face_lambda.size(), cs.number_of_faces());
+}
 
 // From the copy's Tutte map (many thin triangles: a hard start) and from
 // its map after the upper ε levels, the collapses undone give a map of the

@@ -52,7 +52,7 @@ struct Coarse_surface
   std::vector<char> is_cut;      // per edge of `surface`: a seam of the input (kept by the simplification)
   std::vector<char> forbidden;   // per edge of `surface`: a forbidden edge of the input (kept); empty: none
   std::vector<double> face_lambda;
-  std::vector<Collapse> collapses; // in the order made (recorded on request only)
+  std::vector<Collapse> collapses; // in the order made (simplify_for_carrying() only)
 };
 
 namespace multiresolution {
@@ -67,7 +67,6 @@ struct Pins
 {
   Coarse_mesh::Property_map<Vertex, char> on_border, on_seam;
   Coarse_mesh::Property_map<Edge, bool> constrained, seam, forbidden;
-  bool no_ears = false; // set where the collapses are recorded
 
   bool pinned(Vertex v) const { return on_border[v] || on_seam[v]; }
 
@@ -80,10 +79,7 @@ struct Pins
     if(is_border(edge(profile.v0_v1(), mesh), mesh)) // along the border: only seams pin
     {
       if(on_seam[v0] && on_seam[v1]) return -1;
-      const int k = on_seam[v1] ? 1 : 0;
-      // a recorded collapse never removes an ear (its restored face would have no neighbour to take corners from)
-      if(no_ears && CGAL::degree(k == 0 ? v1 : v0, mesh) <= 2) return -1;
-      return k;
+      return on_seam[v1] ? 1 : 0;
     }
     if(pinned(v0) && pinned(v1)) return -1;
     return pinned(v1) ? 1 : 0;
@@ -109,24 +105,6 @@ struct Origin_visitor : CGAL::Surface_mesh_simplification::Edge_collapse_visitor
 {
   Coarse_mesh::Property_map<Vertex, int> origin;
   Pins* pins;
-  std::vector<Collapse>* collapses = nullptr; // null: not recorded
-
-  template <typename Profile, typename Placement>
-  void OnCollapsing(const Profile& profile, const Placement& placement)
-  {
-    if(collapses == nullptr || !placement) return;
-    // the same endpoint as OnCollapsed() below keeps
-    const bool second = *placement == profile.p1() && !(profile.p0() == profile.p1());
-    const Vertex removed = second ? profile.v0() : profile.v1();
-    const Coarse_mesh& mesh = profile.surface_mesh();
-    Collapse c;
-    c.removed = origin[removed];
-    c.kept = origin[second ? profile.v1() : profile.v0()];
-    for(auto h : CGAL::halfedges_around_target(mesh.halfedge(removed), mesh))
-      if(!mesh.is_border(h))
-        c.star.push_back({origin[mesh.source(h)], origin[removed], origin[mesh.target(mesh.next(h))]});
-    collapses->push_back(std::move(c));
-  }
 
   template <typename Profile>
   void OnCollapsed(const Profile& profile, Vertex kept)
@@ -149,13 +127,11 @@ struct Origin_visitor : CGAL::Surface_mesh_simplification::Edge_collapse_visitor
 /// (empty: none) as edges of the copy, and
 /// the orientation of the faces (collapses that turn a normal by more than
 /// CGAL's bound are refused). Each coarse face gets the mean λ of its three
-/// vertices, a vertex having the mean λ of its faces. The collapses are
-/// recorded in `coarse.collapses` if `record`. Returns false if the
+/// vertices, a vertex having the mean λ of its faces. Returns false if the
 /// copy could not be built (then the caller works at full resolution).
 template <typename Surface>
 bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, const std::vector<char>& forbidden,
-                      const std::vector<double>& face_lambda, std::size_t target_faces, Coarse_surface& coarse,
-                      bool record = false)
+                      const std::vector<double>& face_lambda, std::size_t target_faces, Coarse_surface& coarse)
 {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using namespace multiresolution;
@@ -177,8 +153,6 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
   pins.forbidden = mesh.add_property_map<Edge, bool>("e:cut_forbidden", false).first;
   Origin_visitor visitor;
   visitor.pins = &pins;
-  if(record) visitor.collapses = &coarse.collapses;
-  pins.no_ears = record;
   visitor.origin = mesh.add_property_map<Vertex, int>("v:cut_origin", -1).first;
   for(std::size_t v = 0; v < vertex.size(); ++v) visitor.origin[vertex[v]] = int(v);
   for(int fe = 0; fe < int(surface.twin.size()); ++fe)

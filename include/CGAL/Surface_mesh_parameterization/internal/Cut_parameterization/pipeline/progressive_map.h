@@ -216,8 +216,8 @@ inline bool place_in_kernel(const std::vector<std::pair<Vector2, Vector2>>& side
 /// found. Returns false (nothing carried) where the copy's faces do not
 /// refine back to the input's.
 ///
-/// Precondition: `coarse` made by simplify_surface() with `record` from
-/// `surface`, with the seams of `fine` kept; `coarse_x` without flipped face.
+/// Precondition: `coarse` made by simplify_for_carrying() from `surface`,
+/// with the seams of `fine` kept; `coarse_x` without flipped face.
 template <typename Surface>
 bool undo_collapses(const Surface& surface, const Coarse_surface& coarse, const Chart_mesh& coarse_chart,
                     const UV_vector& coarse_x, const Chart_mesh& fine, Carried_map& carried)

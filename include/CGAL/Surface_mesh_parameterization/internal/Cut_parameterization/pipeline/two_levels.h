@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/final_solve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progressive_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progressive_simplification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/Scoped_timer.h>
 
@@ -75,8 +76,8 @@ bool decide_cuts_on_two_levels(const Surface& surface, const std::vector<double>
   if(status != OK) return true;
   Scoped_timer initialization(log.timings.initialization);
   Coarse_surface coarse;
-  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda,
-                       two_level_coarse_faces(surface.number_of_faces()), coarse, true))
+  if(!simplify_for_carrying(surface, state.is_cut, state.rules.forbidden, face_lambda,
+                            two_level_coarse_faces(surface.number_of_faces()), coarse))
     return false;
   Map_state coarse_state;
   coarse_state.is_cut = coarse.is_cut;
@@ -113,7 +114,7 @@ int start_from_solved_copy(const Surface& surface, const std::vector<double>& fa
                            const Final_solve_args& final, Map_state& state, Work_log& log)
 {
   Coarse_surface coarse;
-  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse, true)) return 0;
+  if(!simplify_for_carrying(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse)) return 0;
   Map_state copy;
   copy.is_cut = coarse.is_cut;
   copy.rules.forbidden = coarse.forbidden;
