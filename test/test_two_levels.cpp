@@ -26,6 +26,22 @@ namespace {
 /// A closed torus of 4608 faces, above tuning::two_level_min_faces.
 Soup two_level_torus() { return torus_soup(72, 32); }
 
+/// The two-level torus, indexed, with its initial cut mesh (Tutte map).
+struct Cut_torus
+{
+  Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ic::Map_state state;
+};
+
+void make_cut_torus(Cut_torus& torus)
+{
+  ASSERT_TRUE(ic::index_surface(torus.mesh, get(CGAL::vertex_point, torus.mesh), torus.surface)
+              == ic::Indexing_status::OK);
+  torus.state.is_cut.assign(torus.surface.edges.size(), 0);
+  ASSERT_EQ(ic::initial_map(torus.surface, torus.state), SMP::OK);
+}
+
 /// The input's initial cut mesh (Tutte map) in `state` and a copy of
 /// `faces` faces keeping its cut, its collapses recorded, and the copy's own
 /// initial cut mesh in `coarse_state`.
@@ -50,12 +66,11 @@ void initial_cut_and_copy(const ic::Indexed_surface<Surface_mesh>& surface, std:
 // star, and the copy a manifold indexed without defect.
 TEST(TwoLevels, the_carried_copy_keeps_the_seams_and_records_every_collapse)
 {
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Map_state state;
-  state.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_EQ(ic::initial_map(surface, state), SMP::OK);
+  Cut_torus torus;
+  make_cut_torus(torus);
+  ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  ic::Map_state& state = torus.state;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Coarse_surface coarse;
   ASSERT_TRUE(ic::simplify_for_carrying(surface, state.is_cut, {}, face_lambda, 1000, coarse));
@@ -185,12 +200,11 @@ TEST(TwoLevels, two_level_cuts_give_a_valid_cut_mesh)
 // the Tutte map, to the same E_d.
 TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
 {
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Map_state state;
-  state.is_cut.assign(surface.edges.size(), 0);
-  ASSERT_EQ(ic::initial_map(surface, state), SMP::OK);
+  Cut_torus torus;
+  make_cut_torus(torus);
+  ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  ic::Map_state& state = torus.state;
   const ic::UV_vector tutte = state.x;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Work_log log;

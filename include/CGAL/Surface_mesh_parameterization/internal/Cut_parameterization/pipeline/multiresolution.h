@@ -122,6 +122,34 @@ struct Origin_visitor : CGAL::Surface_mesh_simplification::Edge_collapse_visitor
 
 } // namespace multiresolution
 
+/// Per face of the copy `coarse` of `surface`: the mean λ of its three
+/// vertices, a vertex having the mean λ of its faces in `surface`.
+template <typename Surface>
+std::vector<double> coarse_face_lambda(const Surface& surface, const std::vector<double>& face_lambda,
+                                       const Coarse_surface& coarse)
+{
+  std::vector<double> vertex_lambda(surface.number_of_vertices(), 0.), faces_at(surface.number_of_vertices(), 0.);
+  for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
+    for(int v : surface.corner_vertex[f])
+    {
+      vertex_lambda[std::size_t(v)] += face_lambda[f];
+      faces_at[std::size_t(v)] += 1.;
+    }
+  const Indexed_surface<Coarse_mesh>& cs = coarse.surface;
+  std::vector<double> lambda(cs.number_of_faces());
+  for(std::size_t f = 0; f < cs.number_of_faces(); ++f)
+  {
+    double sum = 0.;
+    for(int v : cs.corner_vertex[f])
+    {
+      const int fine = coarse.fine_vertex[std::size_t(v)];
+      sum += vertex_lambda[std::size_t(fine)] / faces_at[std::size_t(fine)];
+    }
+    lambda[f] = sum / 3.;
+  }
+  return lambda;
+}
+
 /// Simplifies `surface` to about `target_faces` faces into `coarse`, keeping
 /// the border vertices, the seams of `is_cut` and the `forbidden` edges
 /// (empty: none) as edges of the copy, and
@@ -168,13 +196,6 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
       (is_cut[e] ? pins.seam : pins.forbidden)[edge] = true;
     }
   }
-  std::vector<double> vertex_lambda(vertex.size(), 0.), faces_at(vertex.size(), 0.);
-  for(std::size_t f = 0; f < surface.number_of_faces(); ++f)
-    for(int v : surface.corner_vertex[f])
-    {
-      vertex_lambda[v] += face_lambda[f];
-      faces_at[v] += 1.;
-    }
 
   // a closed mesh has 3/2 edges per face, a disk a little fewer
   SMS::Count_stop_predicate<Coarse_mesh> stop(3 * target_faces / 2);
@@ -195,17 +216,7 @@ bool simplify_surface(const Surface& surface, const std::vector<char>& is_cut, c
     coarse.forbidden.resize(cs.edges.size());
     for(std::size_t e = 0; e < cs.edges.size(); ++e) coarse.forbidden[e] = char(pins.forbidden[cs.edges[e]]);
   }
-  coarse.face_lambda.resize(cs.number_of_faces());
-  for(std::size_t f = 0; f < cs.number_of_faces(); ++f)
-  {
-    double sum = 0.;
-    for(int v : cs.corner_vertex[f])
-    {
-      const int fine = coarse.fine_vertex[v];
-      sum += vertex_lambda[fine] / faces_at[fine];
-    }
-    coarse.face_lambda[f] = sum / 3.;
-  }
+  coarse.face_lambda = coarse_face_lambda(surface, face_lambda, coarse);
   return true;
 }
 

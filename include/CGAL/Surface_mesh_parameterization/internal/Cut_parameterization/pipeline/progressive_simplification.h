@@ -323,24 +323,7 @@ bool simplify_for_carrying(const Surface& surface, const std::vector<char>& is_c
     coarse.is_cut[e] = is_cut[std::size_t(it->second)];
     if(!forbidden.empty()) coarse.forbidden[e] = forbidden[std::size_t(it->second)];
   }
-  std::vector<double> vertex_lambda(vertices, 0.), faces_around(vertices, 0.);
-  for(int f = 0; f < nf; ++f)
-    for(int v : surface.corner_vertex[std::size_t(f)])
-    {
-      vertex_lambda[std::size_t(v)] += face_lambda[std::size_t(f)];
-      faces_around[std::size_t(v)] += 1.;
-    }
-  coarse.face_lambda.resize(cs.number_of_faces());
-  for(std::size_t f = 0; f < cs.number_of_faces(); ++f)
-  {
-    double sum = 0.;
-    for(int v : cs.corner_vertex[f])
-    {
-      const int fine = coarse.fine_vertex[std::size_t(v)];
-      sum += vertex_lambda[std::size_t(fine)] / faces_around[std::size_t(fine)];
-    }
-    coarse.face_lambda[f] = sum / 3.;
-  }
+  coarse.face_lambda = coarse_face_lambda(surface, face_lambda, coarse);
   return true;
 }
 
