@@ -194,6 +194,7 @@ bool simplify_for_carrying(const Surface& surface, const std::vector<char>& is_c
     if(twin < 0 || twin > fe) push(surface.edge_source(fe), surface.edge_target(fe));
   }
 
+  std::vector<int> common, neighbours; // scratch of the judging and of each collapse
   // the collapse of `r` into `k`, if it keeps a valid progressive mesh
   auto valid = [&](int r, int k, const int* shared, int count) {
     if(faces_at[std::size_t(r)].size() <= 1) return false; // a vertex of a single face
@@ -201,7 +202,7 @@ bool simplify_for_carrying(const Surface& surface, const std::vector<char>& is_c
     ++mark_round;
     for(int f : faces_at[std::size_t(r)])
       for(int v : face[std::size_t(f)]) mark[std::size_t(v)] = mark_round;
-    std::vector<int> common;
+    common.clear();
     for(int f : faces_at[std::size_t(k)])
       for(int v : face[std::size_t(f)])
         if(v != k && v != r && mark[std::size_t(v)] == mark_round
@@ -271,13 +272,11 @@ bool simplify_for_carrying(const Surface& surface, const std::vector<char>& is_c
     }
     faces_at[std::size_t(r)].clear();
     vertex_alive[std::size_t(r)] = 0;
-    quadric[std::size_t(k)].add(quadric[std::size_t(r)]);
-    on_seam[std::size_t(k)] = char(on_seam[std::size_t(k)] || on_seam[std::size_t(r)]);
-    on_border[std::size_t(k)] = char(on_border[std::size_t(k)] || on_border[std::size_t(r)]);
+    quadric[std::size_t(k)].add(quadric[std::size_t(r)]); // a removed vertex is off the seams, and off the border unless k is on it
     edges -= count == 2 ? 3 : 2;
     ++stamp[std::size_t(k)];
     ++mark_round;
-    std::vector<int> neighbours;
+    neighbours.clear();
     for(int f : faces_at[std::size_t(k)])
       for(int v : face[std::size_t(f)])
         if(v != k && mark[std::size_t(v)] != mark_round)
