@@ -208,7 +208,10 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
   const ic::UV_vector tutte = state.x;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Work_log log;
-  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, state, log), 1);
+  int from_copy = 0;
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, state, log, &from_copy),
+            SMP::OK);
+  ASSERT_EQ(from_copy, 1);
   EXPECT_TRUE(state.x.allFinite());
   EXPECT_EQ(ic::number_of_flipped_faces(state.chart, state.x), 0);
   const std::vector<char> crossing = ic::Border_barrier_term(state.chart).charts_with_crossing(state.x);
@@ -231,4 +234,32 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
   EXPECT_NEAR(distortion[1], distortion[0], 1e-3 * distortion[0]);
   // the carried map is near the input's minimum already
   EXPECT_LT(carried_distortion, 1.05 * distortion[1]);
+}
+
+// The same start from the cut mesh without a map (initial_cut_mesh(), as
+// the plan calls it): no Tutte map is needed where the copy starts every
+// chart, and the map is the one started from the Tutte map, bit for bit.
+TEST(TwoLevels, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
+{
+  Cut_torus torus;
+  make_cut_torus(torus);
+  ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Map_state with_tutte = torus.state;
+  ic::Map_state without_map = torus.state;
+  ASSERT_EQ(ic::initial_cut_mesh(surface, without_map), SMP::OK);
+  ASSERT_EQ(without_map.x.size(), 0);
+  ASSERT_TRUE(without_map.is_cut == with_tutte.is_cut);
+  ic::Work_log log;
+  int from_copy[2] = {0, 0};
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, with_tutte, log,
+                                       &from_copy[0]),
+            SMP::OK);
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, without_map, log,
+                                       &from_copy[1]),
+            SMP::OK);
+  EXPECT_EQ(from_copy[0], 1);
+  EXPECT_EQ(from_copy[1], 1);
+  EXPECT_TRUE(without_map.x.size() == with_tutte.x.size() && without_map.x == with_tutte.x);
 }

@@ -128,19 +128,35 @@ Error_code alternate(const Surface& surface, const std::vector<double>& face_lam
   return OK;
 }
 
-/// Completes `state.is_cut` into a cut that leaves every component a disk,
-/// builds the chart mesh and its Tutte map.
+/// Completes `state.is_cut` into a cut that leaves every component a disk
+/// and builds the chart mesh, without a map (`state.x` emptied).
 template <typename Surface>
-Error_code initial_map(const Surface& surface, Map_state& state)
+Error_code initial_cut_mesh(const Surface& surface, Map_state& state)
 {
   if(!make_disks(surface, state.is_cut, state.rules))
     return state.rules.forbidden.empty() ? ERROR_NO_TOPOLOGICAL_DISC : ERROR_FORBIDDEN_EDGES_BLOCK_CUT;
   state.degenerate_faces = build_chart_mesh(surface, state.is_cut, state.chart, state.corner_uv);
+  state.x.resize(0);
+  return OK;
+}
+
+/// The Tutte map of the chart mesh of `state` (disk_charts_embedding()) in `state.x`.
+inline Error_code tutte_map(Map_state& state)
+{
   const Embedding_status embedding = disk_charts_embedding(state.chart, state.x);
   if(embedding == Embedding_status::NOT_DISKS) return ERROR_NO_TOPOLOGICAL_DISC;
   if(embedding == Embedding_status::SOLVE_FAILED) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   if(embedding == Embedding_status::FLIPPED) return ERROR_NO_1_TO_1_MAPPING;
   return OK;
+}
+
+/// Completes `state.is_cut` into a cut that leaves every component a disk,
+/// builds the chart mesh and its Tutte map.
+template <typename Surface>
+Error_code initial_map(const Surface& surface, Map_state& state)
+{
+  const Error_code status = initial_cut_mesh(surface, state);
+  return status != OK ? status : tutte_map(state);
 }
 
 /// The initial cut and map of `state` (initial_map()), its E_d, and the

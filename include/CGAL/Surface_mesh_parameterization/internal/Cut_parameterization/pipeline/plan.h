@@ -228,8 +228,9 @@ Error_code split_on_coarse_copy(const Surface& coarse_surface, const Cut_paramet
 /// decide_cuts() on a copy simplified to about `o.multiresolution_faces`
 /// faces, at λ scaled by (ℓ_input / ℓ_copy)^tuning::coarse_lambda_exponent,
 /// split there (split_on_coarse_copy()), its cuts carried back to `surface`,
-/// then the initial map of `surface` cut there; `initial_distortion` is the
-/// copy's. Returns false, with `state` untouched, if the copy could not be made.
+/// then the cut mesh of `surface` cut there, without a map (the plan
+/// chooses its start); `initial_distortion` is the copy's. Returns false,
+/// with `state` untouched, if the copy could not be made.
 template <typename Surface>
 bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double>& face_lambda,
                                 const Cut_parameterization_options& o, const Progress& progress, const Run_args& run,
@@ -257,7 +258,7 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
   if(coarse_state.v.size() > 0) state.v = transfer_face_field(surface, coarse, coarse_state.v);
   extraction.stop();
   Scoped_timer full_resolution(log.timings.initialization);
-  status = initial_map(surface, state);
+  status = initial_cut_mesh(surface, state);
   return true;
 }
 
@@ -307,8 +308,13 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   if(coarse) final.box.tolerance = tuning::large_mesh_box_tolerance;
   // cut on a copy, the input starts from a copy of its cut mesh solved and carried back; not a CAD
   // part: from its Tutte map, holes on one circle, the copy's solve under the barrier crawls
-  if(coarse && !is_hard_surface(surface))
-    start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces), final, state, log);
+  if(coarse)
+  {
+    status = is_hard_surface(surface)
+               ? tutte_map(state)
+               : start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces), final, state, log);
+    if(status != OK) return status;
+  }
   // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)
   const bool from_tutte_map = coarse || o.number_of_passes == 0;
   status = final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log);

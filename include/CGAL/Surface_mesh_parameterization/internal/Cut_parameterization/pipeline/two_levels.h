@@ -1,6 +1,7 @@
 // Two levels. The final solve's start of a large mesh: the map of a copy
 // simplified from the cut input, solved there and carried back
-// (start_from_solved_copy(), called by the plan). Where to cut on a mesh of a
+// (start_from_solved_copy(), called by the plan; the Tutte map only for the
+// charts it does not start). Where to cut on a mesh of a
 // few thousand faces (decide_cuts_on_two_levels(), not called: measured
 // worse in doc/design/pipeline.dox): the
 // alternation's upper ε levels on a simplified copy (a quarter of the
@@ -100,18 +101,16 @@ bool decide_cuts_on_two_levels(const Surface& surface, const std::vector<double>
   return true;
 }
 
-/// The start of the final solve of a large mesh: `state` holds the input's
-/// cut mesh (cut where a copy decided) with its Tutte map. A copy of about
-/// `faces` faces is simplified from it keeping its cuts, solved there from
-/// its Tutte map by final_solve() under `final` without box and without
-/// cutting charts into pieces, then carried
-/// back by undo_collapses(): each chart whose carried map is valid (no flip,
-/// no crossing border) starts from it instead of its Tutte map. Returns the
-/// number of charts that do; 0 (`state.x` untouched) where the copy could
-/// not be made, cut as the input or solved.
+/// The map of a copy of about `faces` faces simplified from the cut mesh in
+/// `state` keeping its cuts, solved there from its Tutte map by
+/// final_solve() under `final` without box and without cutting charts into
+/// pieces, then carried back to `state.chart` by undo_collapses(). Returns
+/// the number of charts of `state` on which `carried` is valid (no flip, no
+/// crossing border); 0 where the copy could not be made, cut as the input or
+/// solved.
 template <typename Surface>
-int start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
-                           const Final_solve_args& final, Map_state& state, Work_log& log)
+int solved_copy_map(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
+                    const Final_solve_args& final, const Map_state& state, Work_log& log, Carried_map& carried)
 {
   Coarse_surface coarse;
   if(!simplify_for_carrying(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse)) return 0;
@@ -124,14 +123,44 @@ int start_from_solved_copy(const Surface& surface, const std::vector<double>& fa
   copy_args.box = Box{};                 // the box's solve is the input's
   copy_args.overlap_partition_faces = 0; // no pieces: the copy keeps the input's cuts
   if(final_solve(coarse.surface, copy_args, true, copy, log) != OK) return 0;
-  Carried_map carried;
   if(!undo_collapses(surface, coarse, copy.chart, copy.x, state.chart, carried)) return 0;
+  return int(std::count(carried.valid.begin(), carried.valid.end(), char(1)));
+}
+
+/// The start of the final solve of a large mesh: `state` holds the input's
+/// cut mesh (cut where a copy decided) with its Tutte map, or without a map
+/// (`state.x` empty, initial_cut_mesh()). Each chart whose map carried from
+/// a solved copy (solved_copy_map()) is valid starts from it, the others
+/// from their Tutte map, computed (tutte_map()) only where a chart needs it.
+/// `from_copy`, if given, gets the number of charts that start from the
+/// copy. Returns the Tutte map's status, OK where none was needed.
+template <typename Surface>
+Error_code start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
+                                  const Final_solve_args& final, Map_state& state, Work_log& log,
+                                  int* from_copy = nullptr)
+{
+  Carried_map carried;
+  const int valid = solved_copy_map(surface, face_lambda, faces, final, state, log, carried);
+  if(from_copy != nullptr) *from_copy = valid;
+  const bool have_map = state.x.size() == Eigen::Index(2 * state.chart.number_of_vertices);
+  // every chart from the copy: no Tutte map (at 20k faces, about a tenth of a run)
+  if(!have_map && valid > 0 && valid == int(carried.valid.size()))
+  {
+    state.x = std::move(carried.x);
+    return OK;
+  }
+  if(!have_map)
+  {
+    const Error_code status = tutte_map(state);
+    if(status != OK) return status;
+  }
+  if(valid == 0) return OK;
   int charts = 0;
   const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
   for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
     if(carried.valid[std::size_t(chart_of_face[f])])
       for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = carried.x.segment<2>(2 * v);
-  return int(std::count(carried.valid.begin(), carried.valid.end(), char(1)));
+  return OK;
 }
 
 } // namespace cut
