@@ -2,7 +2,8 @@
 // documented (with_preset(): cuts decided on a copy of about
 // fast_multiresolution_faces faces; the plan: no rerouting,
 // final tolerances times tuning::fast_tolerance_factor, no default-target
-// search; the alternation: its u-steps after the first at that factor too), the default left as it was, and a fast run that keeps every
+// search, the copy made on the index arrays; the alternation: its u-steps
+// after the first at that factor too), the default left as it was, and a fast run that keeps every
 // guarantee of the atlas (check_cut_result(): no flipped face, no crossing
 // border, no overlap, UVs in the unit square).
 #include "cut_result_checks.h"
@@ -75,12 +76,19 @@ TEST(FastPreset, later_u_steps_stop_at_the_looser_tolerance)
 }
 
 // Above 2 x fast_multiresolution_faces faces the preset decides the cuts on
-// a simplified copy: the atlas keeps every guarantee there too.
+// a simplified copy, made on the index arrays (the default's is CGAL's edge
+// collapse): the atlas keeps every guarantee there too.
 TEST(FastPreset, fast_run_cut_on_a_copy_gives_a_valid_atlas)
 {
   Surface_mesh mesh;
   build_mesh(hemisphere_soup(24, 64), mesh);
   ASSERT_GT(num_faces(mesh), std::size_t(2 * SMP::fast_multiresolution_faces));
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  SMP::Cut_parameterization_options fast_options;
+  fast_options.preset = SMP::Preset::FAST;
+  EXPECT_TRUE(ic::cuts_copy_on_index_arrays(surface, fast_options));
+  EXPECT_FALSE(ic::cuts_copy_on_index_arrays(surface, SMP::Cut_parameterization_options()));
   Cut_run<Surface_mesh> run(mesh);
   run.run(SMP::parameters::preset(SMP::Preset::FAST));
   ASSERT_EQ(run.result.error, SMP::OK);

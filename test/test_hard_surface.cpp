@@ -247,7 +247,8 @@ TEST(Hard_surface, a_capped_pieces_solve_goes_on_while_its_distortion_is_above_t
 // Under the fast preset the cuts of a mesh above 2000 faces are decided on a
 // copy of fast_multiresolution_faces faces, which cannot hold a CAD part's
 // holes and creases (the plate with 20x16 holes: E_d 10.7 against 4.2 by
-// default). The plan gives a hard-surface part the default's copy; an
+// default). The plan gives a hard-surface part the default's copy, made as
+// the default makes it (CGAL's edge collapse, not the index arrays); an
 // organic mesh of the same size, and the default preset, keep theirs.
 TEST(Hard_surface, the_fast_preset_gives_a_hard_surface_part_the_default_copy)
 {
@@ -263,6 +264,7 @@ TEST(Hard_surface, the_fast_preset_gives_a_hard_surface_part_the_default_copy)
   ASSERT_TRUE(ic::index_surface(plate, get(CGAL::vertex_point, plate), plate_surface) == ic::Indexing_status::OK);
   ASSERT_GT(plate_surface.number_of_faces(), std::size_t(2 * SMP::fast_multiresolution_faces));
   EXPECT_EQ(ic::options_on(plate_surface, fast).multiresolution_faces, default_faces);
+  EXPECT_FALSE(ic::cuts_copy_on_index_arrays(plate_surface, fast));
   SMP::Cut_parameterization_options small_copy = fast; // a copy even smaller, asked for
   small_copy.multiresolution_faces = 700;
   EXPECT_EQ(ic::options_on(plate_surface, small_copy).multiresolution_faces, default_faces);
@@ -279,4 +281,5 @@ TEST(Hard_surface, the_fast_preset_gives_a_hard_surface_part_the_default_copy)
   ASSERT_TRUE(ic::index_surface(sphere, get(CGAL::vertex_point, sphere), sphere_surface) == ic::Indexing_status::OK);
   ASSERT_GT(sphere_surface.number_of_faces(), std::size_t(2 * SMP::fast_multiresolution_faces));
   EXPECT_EQ(ic::options_on(sphere_surface, fast).multiresolution_faces, SMP::fast_multiresolution_faces);
+  EXPECT_TRUE(ic::cuts_copy_on_index_arrays(sphere_surface, fast));
 }

@@ -208,10 +208,11 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
   const ic::UV_vector tutte = state.x;
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Work_log log;
-  int from_copy = 0;
+  ic::Carried_map from_copy;
   ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, state, log, &from_copy),
             SMP::OK);
-  ASSERT_EQ(from_copy, 1);
+  ASSERT_TRUE(from_copy.valid == std::vector<char>(1, 1));
+  EXPECT_TRUE(from_copy.x == state.x);
   EXPECT_TRUE(state.x.allFinite());
   EXPECT_EQ(ic::number_of_flipped_faces(state.chart, state.x), 0);
   const std::vector<char> crossing = ic::Border_barrier_term(state.chart).charts_with_crossing(state.x);
@@ -252,14 +253,14 @@ TEST(TwoLevels, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
   ASSERT_EQ(without_map.x.size(), 0);
   ASSERT_TRUE(without_map.is_cut == with_tutte.is_cut);
   ic::Work_log log;
-  int from_copy[2] = {0, 0};
+  ic::Carried_map from_copy[2];
   ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, with_tutte, log,
                                        &from_copy[0]),
             SMP::OK);
   ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, without_map, log,
                                        &from_copy[1]),
             SMP::OK);
-  EXPECT_EQ(from_copy[0], 1);
-  EXPECT_EQ(from_copy[1], 1);
+  EXPECT_TRUE(from_copy[0].valid == std::vector<char>(1, 1));
+  EXPECT_TRUE(from_copy[1].valid == std::vector<char>(1, 1));
   EXPECT_TRUE(without_map.x.size() == with_tutte.x.size() && without_map.x == with_tutte.x);
 }

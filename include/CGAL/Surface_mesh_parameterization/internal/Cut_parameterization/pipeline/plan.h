@@ -225,8 +225,21 @@ Error_code split_on_coarse_copy(const Surface& coarse_surface, const Cut_paramet
   return OK;
 }
 
+/// True if the copy that decides the cuts of `surface` is made on the index
+/// arrays (simplify_for_carrying(), about three times faster) rather than by
+/// CGAL's edge collapse (simplify_surface()): under Preset::FAST, but for a
+/// hard-surface part (is_hard_surface()). Another copy moves the cuts
+/// (doc/design/pipeline.dox): the default keeps CGAL's, and so does a CAD
+/// part, whose cuts from the other copy were slower to solve.
+template <typename Surface>
+bool cuts_copy_on_index_arrays(const Surface& surface, const Cut_parameterization_options& o)
+{
+  return o.preset == Preset::FAST && !is_hard_surface(surface);
+}
+
 /// decide_cuts() on a copy simplified to about `o.multiresolution_faces`
-/// faces, at λ scaled by (ℓ_input / ℓ_copy)^tuning::coarse_lambda_exponent,
+/// faces (cuts_copy_on_index_arrays() tells how),
+/// at λ scaled by (ℓ_input / ℓ_copy)^tuning::coarse_lambda_exponent,
 /// split there (split_on_coarse_copy()), its cuts carried back to `surface`,
 /// then the cut mesh of `surface` cut there, without a map (the plan
 /// chooses its start); `initial_distortion` is the copy's. Returns false,
@@ -238,8 +251,9 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
 {
   Scoped_timer initialization(log.timings.initialization);
   Coarse_surface coarse;
-  if(!simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda,
-                       std::size_t(o.multiresolution_faces), coarse))
+  const auto simplify = cuts_copy_on_index_arrays(surface, o) ? simplify_for_carrying<Surface>
+                                                               : simplify_surface<Surface>;
+  if(!simplify(surface, state.is_cut, state.rules.forbidden, face_lambda, std::size_t(o.multiresolution_faces), coarse))
     return false;
   initialization.stop();
   Run_args coarse_run = run; // the copy's longer edges make seams dearer, its coarser map pulls the other way
@@ -308,16 +322,20 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   if(coarse) final.box.tolerance = tuning::large_mesh_box_tolerance;
   // cut on a copy, the input starts from a copy of its cut mesh solved and carried back; not a CAD
   // part: from its Tutte map, holes on one circle, the copy's solve under the barrier crawls
+  Carried_map copy_start;
   if(coarse)
   {
-    status = is_hard_surface(surface)
-               ? tutte_map(state)
-               : start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces), final, state, log);
+    status = is_hard_surface(surface) ? tutte_map(state)
+                                      : start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces),
+                                                               final, state, log, &copy_start);
     if(status != OK) return status;
   }
   // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)
   const bool from_tutte_map = coarse || o.number_of_passes == 0;
-  status = final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log);
+  // a chart started from the solved copy that crosses itself starts again from there, not from Tutte
+  status = copy_start.valid.empty()
+             ? final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log)
+             : final_solve(surface, final, from_tutte_map, state, log, &copy_start);
   if(status != OK) return status;
   state.distortion = mean_distortion(state.chart, state.x);
   return split_where_distorted(surface, o, progress, run, final, state, log);

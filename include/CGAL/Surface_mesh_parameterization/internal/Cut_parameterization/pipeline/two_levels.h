@@ -132,21 +132,24 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
 /// (`state.x` empty, initial_cut_mesh()). Each chart whose map carried from
 /// a solved copy (solved_copy_map()) is valid starts from it, the others
 /// from their Tutte map, computed (tutte_map()) only where a chart needs it.
-/// `from_copy`, if given, gets the number of charts that start from the
-/// copy. Returns the Tutte map's status, OK where none was needed.
+/// `from_copy`, if given, gets the carried map and, per chart, whether it
+/// starts from it (`valid`; empty where the copy could not be made, cut as
+/// the input or solved). Returns the Tutte map's status, OK where none was
+/// needed.
 template <typename Surface>
 Error_code start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
                                   const Final_solve_args& final, Map_state& state, Work_log& log,
-                                  int* from_copy = nullptr)
+                                  Carried_map* from_copy = nullptr)
 {
   Carried_map carried;
   const int valid = solved_copy_map(surface, face_lambda, faces, final, state, log, carried);
-  if(from_copy != nullptr) *from_copy = valid;
+  if(valid == 0) carried = Carried_map{};
   const bool have_map = state.x.size() == Eigen::Index(2 * state.chart.number_of_vertices);
   // every chart from the copy: no Tutte map (at 20k faces, about a tenth of a run)
   if(!have_map && valid > 0 && valid == int(carried.valid.size()))
   {
-    state.x = std::move(carried.x);
+    state.x = carried.x;
+    if(from_copy != nullptr) *from_copy = std::move(carried);
     return OK;
   }
   if(!have_map)
@@ -154,12 +157,15 @@ Error_code start_from_solved_copy(const Surface& surface, const std::vector<doub
     const Error_code status = tutte_map(state);
     if(status != OK) return status;
   }
-  if(valid == 0) return OK;
-  int charts = 0;
-  const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
-  for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
-    if(carried.valid[std::size_t(chart_of_face[f])])
-      for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = carried.x.segment<2>(2 * v);
+  if(valid > 0)
+  {
+    int charts = 0;
+    const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
+    for(std::size_t f = 0; f < state.chart.number_of_faces(); ++f)
+      if(carried.valid[std::size_t(chart_of_face[f])])
+        for(int v : state.chart.faces[f]) state.x.segment<2>(2 * v) = carried.x.segment<2>(2 * v);
+  }
+  if(from_copy != nullptr) *from_copy = std::move(carried);
   return OK;
 }
 
