@@ -145,12 +145,17 @@ inline std::vector<double> chart_distortions(const Chart_mesh& mesh, const UV_ve
 
 /// True if some chart of the map `x` of `mesh` has an E_d above
 /// tuning::tutte_restart_max_distortion: as a start, that Tutte map would
-/// make the barrier's solve crawl.
-inline bool too_distorted_for_the_barrier(const Chart_mesh& mesh, const UV_vector& x)
+/// make the barrier's solve crawl. A chart where `carried` (if given) is
+/// valid is not a Tutte map: the few faces the carrying crushed (E_d 1e3 to
+/// 1e4 where the copy's is 4.5) do not make it crawl.
+inline bool too_distorted_for_the_barrier(const Chart_mesh& mesh, const UV_vector& x,
+                                          const Carried_map* carried = nullptr)
 {
   const std::vector<double> distortion = chart_distortions(mesh, x);
-  return std::any_of(distortion.begin(), distortion.end(),
-                     [](double d) { return !(d <= tuning::tutte_restart_max_distortion); });
+  for(std::size_t c = 0; c < distortion.size(); ++c)
+    if(!(distortion[c] <= tuning::tutte_restart_max_distortion) && !(carried != nullptr && carried->valid[c]))
+      return true;
+  return false;
 }
 
 /// Per chart of `state` (ids of chart_of_faces()): the E_d of its Tutte map
@@ -198,16 +203,19 @@ inline Error_code restart_crossing_charts(const std::vector<char>& crossing, con
 /// The final solve on the cut mesh without the box. With global
 /// injectivity, a chart whose border then crosses itself is put back to a
 /// valid start (restart_crossing_charts(), `carried`: the map the splits
-/// started from, carried over their cuts) for final_solve_box() to solve
+/// started from, carried over their cuts, or the map carried from a solved
+/// copy that the solve started from) for final_solve_box() to solve
 /// again under the border barrier; a crossing chart without a carried map
 /// that overlaps itself on more than `args.overlap_partition_faces` faces,
 /// or whose Tutte map has an E_d above tuning::tutte_restart_max_distortion
 /// (the holes of a CAD part squashed onto one circle: from there each of
 /// hundreds of barrier steps is cut short where a border vertex meets a
 /// segment), is cut into overlap-free pieces instead, each from its part of
-/// the map. From a Tutte map (`from_tutte_map`) the barrier is on from the
-/// first solve, unless that map is above that E_d (args.overlap_partition_faces
-/// > 0): it is then solved without, its crossing charts cut into pieces.
+/// the map. From a Tutte map (`from_tutte_map`; or a map carried from a
+/// solved copy, valid in `carried` on the charts it starts) the barrier is on
+/// from the first solve, unless a chart's Tutte map is above that E_d
+/// (args.overlap_partition_faces > 0, too_distorted_for_the_barrier()): it
+/// is then solved without, its crossing charts cut into pieces.
 template <typename Surface>
 Error_code final_solve_without_box(const Surface& surface, const Final_solve_args& args, bool from_tutte_map,
                                    Map_state& state, Work_log& log, Unboxed_final_map& unboxed,
@@ -215,7 +223,8 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
 {
   // a Tutte map too distorted for the barrier is solved without it first (see above)
   const bool barrier_first = args.global_injectivity && from_tutte_map
-                             && !(args.overlap_partition_faces > 0 && too_distorted_for_the_barrier(state.chart, state.x));
+                             && !(args.overlap_partition_faces > 0
+                                  && too_distorted_for_the_barrier(state.chart, state.x, carried));
   const Error_code status =
     final_minimization(args, barrier_first, 0., args.box.final_stiffness() > 0., state, log);
   if(status != OK) return status;
