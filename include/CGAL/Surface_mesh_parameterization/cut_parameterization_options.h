@@ -255,8 +255,9 @@ Cut_parameterization_options cut_parameterization_options_from(const NamedParame
 /// 1000 faces (the plan gives a hard-surface part the default's copy
 /// back: \ref Cut_parameterization_fast_preset). The other parts of the preset (no
 /// rerouting of the seams, looser final tolerances, no search for the
-/// default distortion target) are the plan's; the looser tolerance of the
-/// u-steps after the first is the alternation's.
+/// default distortion target, the copy simplified by the library's own
+/// quadric collapses instead of CGAL's edge collapse) are the plan's; the
+/// looser tolerance of the u-steps after the first is the alternation's.
 /// \pre none
 /// \post the result equals `o` unless `o.preset == Preset::FAST`
 inline Cut_parameterization_options with_preset(Cut_parameterization_options o)

@@ -146,8 +146,8 @@ inline std::vector<double> chart_distortions(const Chart_mesh& mesh, const UV_ve
 /// True if some chart of the map `x` of `mesh` has an E_d above
 /// tuning::tutte_restart_max_distortion: as a start, that Tutte map would
 /// make the barrier's solve crawl. A chart where `carried` (if given) is
-/// valid is not a Tutte map: the few faces the carrying crushed (E_d 1e3 to
-/// 1e4 where the copy's is 4.5) do not make it crawl.
+/// valid is not a Tutte map: the few faces the carrying crushes do not make
+/// it crawl (doc/design/pipeline.dox).
 inline bool too_distorted_for_the_barrier(const Chart_mesh& mesh, const UV_vector& x,
                                           const Carried_map* carried = nullptr)
 {

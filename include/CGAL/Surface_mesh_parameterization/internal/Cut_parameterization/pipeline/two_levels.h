@@ -145,7 +145,7 @@ Error_code start_from_solved_copy(const Surface& surface, const std::vector<doub
   const int valid = solved_copy_map(surface, face_lambda, faces, final, state, log, carried);
   if(valid == 0) carried = Carried_map{};
   const bool have_map = state.x.size() == Eigen::Index(2 * state.chart.number_of_vertices);
-  // every chart from the copy: no Tutte map (at 20k faces, about a tenth of a run)
+  // every chart from the copy: no Tutte map to solve
   if(!have_map && valid > 0 && valid == int(carried.valid.size()))
   {
     state.x = carried.x;
