@@ -143,21 +143,16 @@ Error_code start_from_solved_copy(const Surface& surface, const std::vector<doub
 {
   Carried_map carried;
   const int valid = solved_copy_map(surface, face_lambda, faces, final, state, log, carried);
-  if(valid == 0) carried = Carried_map{};
-  const bool have_map = state.x.size() == Eigen::Index(2 * state.chart.number_of_vertices);
+  if(valid == 0) carried = Carried_map{}; // nothing carried: no chart flagged
+  const bool every_chart = valid > 0 && valid == int(carried.valid.size());
   // every chart from the copy: no Tutte map to solve
-  if(!have_map && valid > 0 && valid == int(carried.valid.size()))
-  {
-    state.x = carried.x;
-    if(from_copy != nullptr) *from_copy = std::move(carried);
-    return OK;
-  }
-  if(!have_map)
+  if(!every_chart && state.x.size() != Eigen::Index(2 * state.chart.number_of_vertices))
   {
     const Error_code status = tutte_map(state);
     if(status != OK) return status;
   }
-  if(valid > 0)
+  if(every_chart) state.x = carried.x;
+  else if(valid > 0)
   {
     int charts = 0;
     const std::vector<int> chart_of_face = chart_of_faces(state.chart, charts);
