@@ -28,7 +28,7 @@ int main(int argc, char** argv)
   cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
   cut_benchmark::Options opt;
   if(const int r = cut_benchmark::parse_options(argc, argv, opt)) return r == 1 ? 0 : r;
-  cut_tools::use_one_blas_thread();
+  if(cut_tools::use_one_blas_thread()) cut_tools::stop_blas_worker_threads();
   cut_tools::keep_freed_memory();
   if(opt.packing) return cut_benchmark::run_packing(opt);
   if(opt.scaling) return cut_benchmark::run_scaling(opt);

@@ -29,6 +29,7 @@
 // OpenBLAS's control, if the BLAS loaded is OpenBLAS (a weak reference: null otherwise)
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 extern "C" char* openblas_get_corename(void) __attribute__((weak));
+extern "C" int blas_thread_shutdown_(void) __attribute__((weak));
 #endif
 
 namespace cut_tools {
@@ -42,6 +43,24 @@ inline bool use_one_blas_thread()
      && std::getenv("OMP_NUM_THREADS") == nullptr)
   {
     openblas_set_num_threads(1);
+    return true;
+  }
+#endif
+  return false;
+}
+
+/// Stops the worker threads that OpenBLAS started when it loaded, once the
+/// process runs on one BLAS thread (use_one_blas_thread() returned true):
+/// each spins on sched_yield for a while before it sleeps, taking a core
+/// from TBB's threads during the first part of every run. A BLAS call on one
+/// thread does not start them again. Not for a process that gives the
+/// threads back later (the Python module). Returns true if they were stopped.
+inline bool stop_blas_worker_threads()
+{
+#if defined(__GNUC__) && defined(__ELF__)
+  if(blas_thread_shutdown_ != nullptr)
+  {
+    blas_thread_shutdown_();
     return true;
   }
 #endif

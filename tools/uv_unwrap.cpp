@@ -784,7 +784,7 @@ Run_summary unwrap_one(const char* argv0, const Options& options, const std::str
 int main(int argc, char** argv)
 {
   cut_tools::use_vector_blas_kernels(argv); // see blas_setup.h
-  cut_tools::use_one_blas_thread();
+  if(cut_tools::use_one_blas_thread()) cut_tools::stop_blas_worker_threads();
   cut_tools::keep_freed_memory();   // see malloc_settings.h
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
