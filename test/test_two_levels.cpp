@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/two_levels.h>
 
 #include <algorithm>
+#include <map>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
@@ -153,6 +154,70 @@ TEST(TwoLevels, carried_map_has_no_flipped_face)
   }
 }
 
+// The carried map relaxed (relax_carried_map()): from the copy's Tutte map
+// carried back (crushed faces), the energy of the flagged chart falls and
+// its worst face gets better, no face flips, the border vertices stay where
+// they were; a chart not flagged is left as it is.
+TEST(TwoLevels, the_carried_map_relaxed_is_less_distorted_and_keeps_its_border)
+{
+  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  ic::Map_state state, coarse_state;
+  ic::Coarse_surface coarse;
+  initial_cut_and_copy(surface, 1000, state, coarse, coarse_state);
+  ASSERT_FALSE(HasFatalFailure());
+  ic::Carried_map carried;
+  ASSERT_TRUE(ic::undo_collapses(surface, coarse, coarse_state.chart, coarse_state.x, state.chart, carried));
+  ASSERT_TRUE(carried.valid == std::vector<char>(1, 1));
+  const ic::Chart_mesh& chart = state.chart;
+  auto energy = [&](const ic::UV_vector& x, double& worst) {
+    double sum = 0.;
+    worst = 0.;
+    for(std::size_t f = 0; f < chart.number_of_faces(); ++f)
+    {
+      const double psi = ic::symmetric_dirichlet(chart.jacobian(x, f));
+      sum += chart.area[f] * psi;
+      worst = (std::max)(worst, psi);
+    }
+    return sum;
+  };
+  double worst_before = 0., worst_after = 0.;
+  const double before = energy(carried.x, worst_before);
+  ASSERT_TRUE(std::isfinite(before));
+  ASSERT_GT(worst_before, ic::tuning::carried_relaxation_energy); // something to relax
+
+  ic::UV_vector untouched = carried.x;
+  ic::relax_carried_map(chart, std::vector<char>(1, 0), untouched);
+  EXPECT_TRUE(untouched == carried.x);
+
+  ic::UV_vector relaxed = carried.x;
+  ic::relax_carried_map(chart, carried.valid, relaxed);
+  EXPECT_TRUE(relaxed.allFinite());
+  EXPECT_EQ(ic::number_of_flipped_faces(chart, relaxed), 0);
+  const double after = energy(relaxed, worst_after);
+  EXPECT_LT(after, before);
+  EXPECT_LT(worst_after, worst_before);
+  // the border vertices (those of an edge of one face) have not moved
+  std::map<std::pair<int, int>, int> edge_faces;
+  for(const auto& face : chart.faces)
+    for(int k = 0; k < 3; ++k)
+      ++edge_faces[std::minmax(face[std::size_t(k)], face[std::size_t((k + 1) % 3)])];
+  int border = 0, moved = 0;
+  for(const auto& [edge, count] : edge_faces)
+    if(count == 1)
+      for(int v : {edge.first, edge.second})
+      {
+        ++border;
+        EXPECT_TRUE(relaxed.segment<2>(2 * v) == carried.x.segment<2>(2 * v)) << "border vertex " << v;
+      }
+  for(int v = 0; v < chart.number_of_vertices; ++v) moved += relaxed.segment<2>(2 * v) != carried.x.segment<2>(2 * v);
+  EXPECT_GT(border, 0);
+  EXPECT_GT(moved, 0);
+  const std::vector<char> crossing = ic::Border_barrier_term(chart).charts_with_crossing(relaxed);
+  EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
+}
+
 // The stage (the plan does not call it: measured worse, doc/design/pipeline.dox)
 // gives a valid cut mesh from the carried map: the copy made, cut as the
 // input, its map carried; after the input's last ε level and its cuts, a
@@ -209,7 +274,7 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
   const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Work_log log;
   ic::Carried_map from_copy;
-  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, state, log, &from_copy),
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, 1000, ic::Final_solve_args{}, state, log, &from_copy),
             SMP::OK);
   ASSERT_TRUE(from_copy.valid == std::vector<char>(1, 1));
   EXPECT_TRUE(from_copy.x == state.x);
@@ -237,6 +302,50 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
   EXPECT_LT(carried_distortion, 1.05 * distortion[1]);
 }
 
+// A large mesh starts from a chain of solved copies, each of
+// tuning::solved_copy_level_ratio times the faces of the one that starts its
+// solve (solved_copy_faces()): 640k faces from 160k, 40k and 10k; below 8
+// times the smallest, one copy of the smallest, as before the chain.
+TEST(TwoLevels, the_solved_copies_form_a_chain_on_large_meshes)
+{
+  EXPECT_EQ(ic::solved_copy_faces(640000, 10000), 160000u);
+  EXPECT_EQ(ic::solved_copy_faces(160000, 10000), 40000u);
+  EXPECT_EQ(ic::solved_copy_faces(159999, 10000), 40000u);
+  EXPECT_EQ(ic::solved_copy_faces(79999, 10000), 10000u);
+  EXPECT_EQ(ic::solved_copy_faces(20000, 10000), 10000u);
+  EXPECT_EQ(ic::solved_copy_faces(5000, 10000), 10000u);
+  EXPECT_EQ(ic::solved_copy_faces(2560000, 10000), 640000u);
+
+  // a copy of 2000 faces started from one of 500: every chart carried, no
+  // flip, no crossing border, near the input's minimum as from one copy
+  Cut_torus torus;
+  make_cut_torus(torus);
+  ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Map_state chain = torus.state, single = torus.state;
+  ic::Work_log chain_log, single_log;
+  ic::Carried_map from_chain, from_single;
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 500, ic::Final_solve_args{}, chain, chain_log,
+                                       &from_chain),
+            SMP::OK);
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 2000, ic::Final_solve_args{}, single, single_log,
+                                       &from_single),
+            SMP::OK);
+  ASSERT_TRUE(from_chain.valid == std::vector<char>(1, 1));
+  EXPECT_TRUE(chain.x.allFinite());
+  EXPECT_EQ(ic::number_of_flipped_faces(chain.chart, chain.x), 0);
+  const std::vector<char> crossing = ic::Border_barrier_term(chain.chart).charts_with_crossing(chain.x);
+  EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
+  // the chain solved one more copy than the single level
+  EXPECT_GT(chain_log.final_work.iterations, 0u);
+  EXPECT_FALSE(chain.x == single.x);
+  const double chain_distortion = ic::mean_distortion(chain.chart, chain.x);
+  const double single_distortion = ic::mean_distortion(single.chart, single.x);
+  EXPECT_LT(chain_distortion, 1.02 * single_distortion) << "single copy " << single_distortion;
+  EXPECT_LT(chain_distortion, ic::mean_distortion(chain.chart, torus.state.x));
+}
+
 // The same start from the cut mesh without a map (initial_cut_mesh(), as
 // the plan calls it): no Tutte map is needed where the copy starts every
 // chart, and the map is the one started from the Tutte map, bit for bit.
@@ -254,10 +363,10 @@ TEST(TwoLevels, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
   ASSERT_TRUE(without_map.is_cut == with_tutte.is_cut);
   ic::Work_log log;
   ic::Carried_map from_copy[2];
-  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, with_tutte, log,
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, 1000, ic::Final_solve_args{}, with_tutte, log,
                                        &from_copy[0]),
             SMP::OK);
-  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, ic::Final_solve_args{}, without_map, log,
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, 1000, ic::Final_solve_args{}, without_map, log,
                                        &from_copy[1]),
             SMP::OK);
   EXPECT_TRUE(from_copy[0].valid == std::vector<char>(1, 1));

@@ -248,6 +248,11 @@ constexpr double lambda_candidate_length_ratio = 1.5;
 /// the multiresolution copy's λ is scaled by (mean edge ratio)^this
 constexpr double coarse_lambda_exponent = 0.25;
 
+// -- the solved copies that start the final solve of a mesh cut on a copy (pipeline/two_levels.h)
+/// Faces of one copy over those of the copy that starts its solve: a mesh of 8 times
+/// multiresolution_faces or more starts from a chain of copies (640k faces: 160k, 40k, 10k).
+constexpr std::size_t solved_copy_level_ratio = 4;
+
 // -- two levels (pipeline/two_levels.h, pipeline/progressive_map.h; not called by the plan: measured worse)
 /// above this many faces (and up to the coarse copy's 2 x multiresolution_faces) the alternation's upper
 /// ε levels run on a simplified copy: below, the copy would decide little that the input does not redo
@@ -264,6 +269,18 @@ constexpr double progressive_kernel_margin = 0.05;
 constexpr int progressive_margin_halvings = 40;
 /// an open fan (on the border) unfolds over at most this fraction of a turn
 constexpr double progressive_open_fan_angle = 0.95;
+
+// -- the local relaxation of a carried map (atlas/carried_map_relaxation.h)
+/// sweeps over the interior vertices at most (a sweep that moves none ends it)
+constexpr int carried_relaxation_sweeps = 3;
+/// a vertex moves where a face of its fan has a symmetric Dirichlet energy (0 at an isometry) above this
+constexpr double carried_relaxation_energy = 1.;
+/// Newton steps per vertex and sweep at most
+constexpr int carried_relaxation_steps = 3;
+/// fraction of the way to the first collapse of a fan face that a step may go
+constexpr double carried_relaxation_reach = 0.8;
+/// step halvings of the backtracking at most
+constexpr int carried_relaxation_halvings = 20;
 
 // -- shape packing (atlas/shape_packing.h)
 /// a chart's raster holds every texel its triangles come within this many texels of (rounding)

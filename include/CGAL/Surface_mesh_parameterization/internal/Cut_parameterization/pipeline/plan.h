@@ -325,9 +325,11 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   Carried_map copy_start;
   if(coarse)
   {
+    const std::size_t copy_faces = std::size_t(o.multiresolution_faces);
     status = is_hard_surface(surface) ? tutte_map(state)
-                                      : start_from_solved_copy(surface, face_lambda, std::size_t(o.multiresolution_faces),
-                                                               final, state, log, &copy_start);
+                                      : start_from_solved_copy(surface, face_lambda,
+                                                               solved_copy_faces(surface.number_of_faces(), copy_faces),
+                                                               copy_faces, final, state, log, &copy_start);
     if(status != OK) return status;
   }
   // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)

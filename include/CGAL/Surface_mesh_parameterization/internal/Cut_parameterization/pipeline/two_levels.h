@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_error_codes.h>
 #include <CGAL/Surface_mesh_parameterization/cut_parameterization_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/atlas/carried_map_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/alternation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/final_solve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
@@ -101,16 +102,39 @@ bool decide_cuts_on_two_levels(const Surface& surface, const std::vector<double>
   return true;
 }
 
+/// The faces of the solved copy that starts the final solve of a mesh of
+/// `faces` faces: `smallest` times the largest power of
+/// tuning::solved_copy_level_ratio that leaves it at most half of `faces`,
+/// and `smallest` at least; that copy starts from one of that ratio fewer
+/// faces, and so on down to `smallest` (solved_copy_map()).
+inline std::size_t solved_copy_faces(std::size_t faces, std::size_t smallest)
+{
+  const std::size_t ratio = tuning::solved_copy_level_ratio;
+  std::size_t copy = smallest;
+  while(copy * ratio <= faces / 2) copy *= ratio;
+  return copy;
+}
+
+template <typename Surface>
+Error_code start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
+                                  std::size_t smallest, const Final_solve_args& final, Map_state& state, Work_log& log,
+                                  Carried_map* from_copy = nullptr);
+
 /// The map of a copy of about `faces` faces simplified from the cut mesh in
-/// `state` keeping its cuts, solved there from its Tutte map by
-/// final_solve() under `final` without box and without cutting charts into
-/// pieces, then carried back to `state.chart` by undo_collapses(). Returns
-/// the number of charts of `state` on which `carried` is valid (no flip, no
-/// crossing border); 0 where the copy could not be made, cut as the input or
-/// solved.
+/// `state` keeping its cuts, solved there by final_solve() under `final`
+/// without box and without cutting charts into pieces, then carried back to
+/// `state.chart` by undo_collapses() and relaxed where the carrying crushed
+/// faces (relax_carried_map()). The copy starts from its Tutte map, or,
+/// where `faces` is at least tuning::solved_copy_level_ratio times
+/// `smallest`, from a copy of its own of that ratio fewer faces solved the
+/// same way (start_from_solved_copy()): each level starts near its solution.
+/// Returns the number of charts of `state` on which `carried` is valid (no
+/// flip, no crossing border); 0 where the copy could not be made, cut as the
+/// input or solved.
 template <typename Surface>
 int solved_copy_map(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
-                    const Final_solve_args& final, const Map_state& state, Work_log& log, Carried_map& carried)
+                    std::size_t smallest, const Final_solve_args& final, const Map_state& state, Work_log& log,
+                    Carried_map& carried)
 {
   Coarse_surface coarse;
   if(!simplify_for_carrying(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse)) return 0;
@@ -118,12 +142,20 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
   copy.is_cut = coarse.is_cut;
   copy.rules.forbidden = coarse.forbidden;
   // the copy must be cut where the input is: its initial cut adds nothing
-  if(initial_map(coarse.surface, copy) != OK || copy.is_cut != coarse.is_cut) return 0;
+  if(initial_cut_mesh(coarse.surface, copy) != OK || copy.is_cut != coarse.is_cut) return 0;
   Final_solve_args copy_args = final;
   copy_args.box = Box{};                 // the box's solve is the input's
   copy_args.overlap_partition_faces = 0; // no pieces: the copy keeps the input's cuts
-  if(final_solve(coarse.surface, copy_args, true, copy, log) != OK) return 0;
+  Carried_map below;
+  const std::size_t next = faces / tuning::solved_copy_level_ratio;
+  const Error_code start = next >= smallest
+                             ? start_from_solved_copy(coarse.surface, coarse.face_lambda, next, smallest, copy_args,
+                                                      copy, log, &below)
+                             : tutte_map(copy);
+  if(start != OK) return 0;
+  if(final_solve(coarse.surface, copy_args, true, copy, log, below.valid.empty() ? nullptr : &below) != OK) return 0;
   if(!undo_collapses(surface, coarse, copy.chart, copy.x, state.chart, carried)) return 0;
+  relax_carried_map(state.chart, carried.valid, carried.x);
   return int(std::count(carried.valid.begin(), carried.valid.end(), char(1)));
 }
 
@@ -134,15 +166,16 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
 /// from their Tutte map, computed (tutte_map()) only where a chart needs it.
 /// `from_copy`, if given, gets the carried map and, per chart, whether it
 /// starts from it (`valid`; empty where the copy could not be made, cut as
-/// the input or solved). Returns the Tutte map's status, OK where none was
-/// needed.
+/// the input or solved). `faces`: the copy's size; `smallest`: the
+/// smallest copy of the chain below it (solved_copy_map()). Returns the
+/// Tutte map's status, OK where none was needed.
 template <typename Surface>
 Error_code start_from_solved_copy(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
-                                  const Final_solve_args& final, Map_state& state, Work_log& log,
-                                  Carried_map* from_copy = nullptr)
+                                  std::size_t smallest, const Final_solve_args& final, Map_state& state, Work_log& log,
+                                  Carried_map* from_copy)
 {
   Carried_map carried;
-  const int valid = solved_copy_map(surface, face_lambda, faces, final, state, log, carried);
+  const int valid = solved_copy_map(surface, face_lambda, faces, smallest, final, state, log, carried);
   if(valid == 0) carried = Carried_map{}; // nothing carried: no chart flagged
   const bool every_chart = valid > 0 && valid == int(carried.valid.size());
   // every chart from the copy: no Tutte map to solve
