@@ -395,3 +395,62 @@ TEST(TwoLevels, a_chart_started_from_the_copy_gets_the_barrier_from_the_first_so
   carried.valid.assign(1, 1);
   EXPECT_FALSE(ic::too_distorted_for_the_barrier(state.chart, shrunk, &carried));
 }
+
+// The box on a chain of solved copies: decided on the smallest copy (the
+// final solve there, its budget judged against the map without box), then
+// each larger copy and the input only fit the carried boxed map, by
+// carried_box_solve() (at most tuning::carried_box_iterations Newton
+// iterations). The carried map says which box it was solved under; without
+// a box, none; a chart not carried sends the input back to the full final
+// solve.
+TEST(TwoLevels, the_box_is_decided_on_the_smallest_copy_and_carried)
+{
+  Cut_torus torus;
+  make_cut_torus(torus);
+  ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Final_solve_args boxed;
+  boxed.box.aspect_ratio = 1.;
+  boxed.box.stiffness = SMP::gentle_bounding_box_stiffness;
+  ic::Map_state with_box = torus.state, without_box = torus.state;
+  ic::Work_log box_log, plain_log;
+  ic::Carried_map from_boxed, from_plain;
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 500, boxed, with_box, box_log, &from_boxed), SMP::OK);
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 500, ic::Final_solve_args{}, without_box, plain_log,
+                                       &from_plain),
+            SMP::OK);
+  ASSERT_TRUE(from_boxed.valid == std::vector<char>(1, 1));
+  ASSERT_TRUE(from_plain.valid == std::vector<char>(1, 1));
+  EXPECT_EQ(from_boxed.box_stiffness, SMP::gentle_bounding_box_stiffness); // no budget: kept whole
+  EXPECT_EQ(from_plain.box_stiffness, 0.);
+  EXPECT_TRUE(ic::carried_under_the_box(from_boxed));
+  EXPECT_FALSE(ic::carried_under_the_box(from_plain));
+  EXPECT_GT(box_log.box_work.iterations, 0u);
+  EXPECT_EQ(plain_log.box_work.iterations, 0u);
+
+  // the copies' box shaped the carried map: it lies in its rectangle more than the map without box
+  auto box_energy = [&](const ic::UV_vector& x) {
+    ic::Bounding_box_term term(with_box.chart, 1., SMP::gentle_bounding_box_stiffness);
+    term.update(x); // its rectangle on this map's border
+    return term.value(x);
+  };
+  EXPECT_LT(box_energy(with_box.x), 0.5 * box_energy(without_box.x));
+
+  // the input's solve fits it in a few iterations, valid
+  const double before = ic::mean_distortion(with_box.chart, with_box.x);
+  ic::Work_log fit_log;
+  ASSERT_EQ(ic::carried_box_solve(boxed, from_boxed.box_stiffness, with_box, fit_log), SMP::OK);
+  EXPECT_GT(fit_log.box_work.iterations, 0u);
+  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::tuning::carried_box_iterations));
+  EXPECT_TRUE(with_box.x.allFinite());
+  EXPECT_EQ(ic::number_of_flipped_faces(with_box.chart, with_box.x), 0);
+  const std::vector<char> crossing = ic::Border_barrier_term(with_box.chart).charts_with_crossing(with_box.x);
+  EXPECT_TRUE(std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; }));
+  EXPECT_LT(ic::mean_distortion(with_box.chart, with_box.x), before + 0.05);
+
+  // a chart the copy does not start: the input's own final solve
+  ic::Carried_map partly = from_boxed;
+  partly.valid.push_back(0);
+  EXPECT_FALSE(ic::carried_under_the_box(partly));
+}

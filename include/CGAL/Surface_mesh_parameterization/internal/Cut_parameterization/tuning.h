@@ -156,6 +156,9 @@ constexpr double constrained_tolerance = 1e-5;
 constexpr double box_tolerance = 1e-4;
 /// the box's solve where the cuts came from a simplified copy (each iteration a solve of the whole mesh)
 constexpr double large_mesh_box_tolerance = 1e-3;
+/// the box's solve of a map carried from a copy solved with the box: at most this many Newton iterations
+/// (the copy's box set the charts' shapes; each iteration a solve of the finer mesh)
+constexpr int carried_box_iterations = 8;
 /// the box's solve stops in a slow tail: after this many iterations, ...
 constexpr int box_slow_tail_after = 60;
 /// ... less than this ratio of the energy gained over this window (steps stopped at barrier contacts)

@@ -21,7 +21,8 @@ namespace cut {
 struct Carried_map
 {
   UV_vector x;
-  std::vector<char> valid; // per chart (ids of chart_of_faces())
+  std::vector<char> valid;   // per chart (ids of chart_of_faces())
+  double box_stiffness = 0.; // the box `x` was solved under (0: none)
 };
 
 /// `carried.x` on the chart mesh `after` from the map `x_before` of `before`, both

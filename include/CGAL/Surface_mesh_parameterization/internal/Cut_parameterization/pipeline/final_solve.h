@@ -270,12 +270,13 @@ Error_code final_solve_without_box(const Surface& surface, const Final_solve_arg
 /// costs more than its budget (or takes E_d above its ceiling), it is
 /// weakened, then dropped: the map without box is the result. No box where
 /// the final solve cut the charts into more than `args.box_max_pieces` pieces.
-/// Where the charts were cut into pieces, the solve without box does at
+/// `kept_stiffness`, if given, gets the stiffness of the box the result was
+/// solved under (0: none). Where the charts were cut into pieces, the solve without box does at
 /// most `args.pieces_max_iterations` Newton iterations if that is above 0,
 /// and as many again (within `args.max_iterations`) while it ran to that cap,
 /// lowered E_d and left it above tuning::default_distortion_target.
 inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_final_map& unboxed, Map_state& state,
-                                  Work_log& log)
+                                  Work_log& log, double* kept_stiffness = nullptr)
 {
   // many pieces: the box pushes each against its own border, every step stopped at a contact, and
   // ends weakened twice and dropped over its budget (plates with 8x6 and 12x10 holes)
@@ -327,19 +328,34 @@ inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_fi
     if(stiffness > 0.) status = solve(stiffness);
     else state.x = std::move(without_box);
   }
+  if(kept_stiffness != nullptr) *kept_stiffness = stiffness;
   return status;
 }
 
+/// The box's solve of `state`, a map carried from a copy solved under the
+/// box at `stiffness` (its budget judged there, final_solve_box()): under
+/// the barrier with global injectivity, at most
+/// tuning::carried_box_iterations Newton iterations. The copy's box set the
+/// charts' shapes; the solve fits them to this mesh.
+inline Error_code carried_box_solve(const Final_solve_args& args, double stiffness, Map_state& state, Work_log& log)
+{
+  Final_solve_args capped = args;
+  capped.max_iterations = (std::min)(args.max_iterations, tuning::carried_box_iterations);
+  return final_minimization(capped, args.global_injectivity, stiffness, true, state, log);
+}
+
 /// The final solve: final_solve_without_box(), then final_solve_box().
-/// `restarted`, if given, tells whether a chart crossed itself and started again.
+/// `restarted`, if given, tells whether a chart crossed itself and started
+/// again; `kept_stiffness`: see final_solve_box().
 template <typename Surface>
 Error_code final_solve(const Surface& surface, const Final_solve_args& args, bool from_tutte_map, Map_state& state,
-                       Work_log& log, const Carried_map* carried = nullptr, bool* restarted = nullptr)
+                       Work_log& log, const Carried_map* carried = nullptr, bool* restarted = nullptr,
+                       double* kept_stiffness = nullptr)
 {
   Unboxed_final_map unboxed;
   const Error_code status = final_solve_without_box(surface, args, from_tutte_map, state, log, unboxed, carried);
   if(restarted != nullptr) *restarted = unboxed.restart;
-  return status != OK ? status : final_solve_box(args, unboxed, state, log);
+  return status != OK ? status : final_solve_box(args, unboxed, state, log, kept_stiffness);
 }
 
 /// True if, with `global_injectivity`, a chart of `state` overlaps itself

@@ -120,6 +120,14 @@ Error_code start_from_solved_copy(const Surface& surface, const std::vector<doub
                                   std::size_t smallest, const Final_solve_args& final, Map_state& state, Work_log& log,
                                   Carried_map* from_copy = nullptr);
 
+/// True if `carried` starts every chart and was solved under the box: the
+/// finer mesh's final solve is then carried_box_solve() alone.
+inline bool carried_under_the_box(const Carried_map& carried)
+{
+  return !carried.valid.empty() && carried.box_stiffness > 0.
+         && std::find(carried.valid.begin(), carried.valid.end(), char(0)) == carried.valid.end();
+}
+
 /// The map of a copy of about `faces` faces simplified from the cut mesh in
 /// `state` keeping its cuts, solved there by final_solve() under `final`
 /// without box and without cutting charts into pieces, then carried back to
@@ -144,7 +152,6 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
   // the copy must be cut where the input is: its initial cut adds nothing
   if(initial_cut_mesh(coarse.surface, copy) != OK || copy.is_cut != coarse.is_cut) return 0;
   Final_solve_args copy_args = final;
-  copy_args.box = Box{};                 // the box's solve is the input's
   copy_args.overlap_partition_faces = 0; // no pieces: the copy keeps the input's cuts
   Carried_map below;
   const std::size_t next = faces / tuning::solved_copy_level_ratio;
@@ -153,9 +160,18 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
                                                       copy, log, &below)
                              : tutte_map(copy);
   if(start != OK) return 0;
-  if(final_solve(coarse.surface, copy_args, true, copy, log, below.valid.empty() ? nullptr : &below) != OK) return 0;
+  double box_stiffness = 0.;
+  if(carried_under_the_box(below))
+  {
+    if(carried_box_solve(copy_args, below.box_stiffness, copy, log) != OK) return 0;
+    box_stiffness = below.box_stiffness;
+  }
+  else if(final_solve(coarse.surface, copy_args, true, copy, log, below.valid.empty() ? nullptr : &below, nullptr,
+                      &box_stiffness) != OK)
+    return 0;
   if(!undo_collapses(surface, coarse, copy.chart, copy.x, state.chart, carried)) return 0;
   relax_carried_map(state.chart, carried.valid, carried.x);
+  carried.box_stiffness = box_stiffness;
   return int(std::count(carried.valid.begin(), carried.valid.end(), char(1)));
 }
 
