@@ -59,6 +59,22 @@ void initial_cut_and_copy(const ic::Indexed_surface<Surface_mesh>& surface, std:
   ASSERT_TRUE(coarse_state.is_cut == coarse.is_cut); // the copy is cut where the input is
 }
 
+/// The two-level torus, indexed, with its initial cut mesh and a copy (initial_cut_and_copy()).
+struct Torus_with_copy
+{
+  Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
+  ic::Indexed_surface<Surface_mesh> surface;
+  ic::Map_state state, coarse_state;
+  ic::Coarse_surface coarse;
+};
+
+void make_torus_with_copy(Torus_with_copy& torus, std::size_t faces)
+{
+  ASSERT_TRUE(ic::index_surface(torus.mesh, get(CGAL::vertex_point, torus.mesh), torus.surface)
+              == ic::Indexing_status::OK);
+  initial_cut_and_copy(torus.surface, faces, torus.state, torus.coarse, torus.coarse_state);
+}
+
 } // namespace
 
 // The copy whose map is carried back (simplify_for_carrying()): about the
@@ -108,13 +124,12 @@ TEST(TwoLevels, the_carried_copy_keeps_the_seams_and_records_every_collapse)
 // leaves each vertex of the copy where the copy had it.
 TEST(TwoLevels, carried_map_has_no_flipped_face)
 {
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Map_state state, coarse_state;
-  ic::Coarse_surface coarse;
-  initial_cut_and_copy(surface, 1000, state, coarse, coarse_state);
+  Torus_with_copy torus;
+  make_torus_with_copy(torus, 1000);
   ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  ic::Map_state &state = torus.state, &coarse_state = torus.coarse_state;
+  const ic::Coarse_surface& coarse = torus.coarse;
   SMP::Cut_parameterization_options o;
   for(int levels : {0, ic::number_of_eps_levels(o) - 1})
   {
@@ -160,13 +175,12 @@ TEST(TwoLevels, carried_map_has_no_flipped_face)
 // they were; a chart not flagged is left as it is.
 TEST(TwoLevels, the_carried_map_relaxed_is_less_distorted_and_keeps_its_border)
 {
-  const Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
-  ic::Indexed_surface<Surface_mesh> surface;
-  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
-  ic::Map_state state, coarse_state;
-  ic::Coarse_surface coarse;
-  initial_cut_and_copy(surface, 1000, state, coarse, coarse_state);
+  Torus_with_copy torus;
+  make_torus_with_copy(torus, 1000);
   ASSERT_FALSE(HasFatalFailure());
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  ic::Map_state &state = torus.state, &coarse_state = torus.coarse_state;
+  const ic::Coarse_surface& coarse = torus.coarse;
   ic::Carried_map carried;
   ASSERT_TRUE(ic::undo_collapses(surface, coarse, coarse_state.chart, coarse_state.x, state.chart, carried));
   ASSERT_TRUE(carried.valid == std::vector<char>(1, 1));

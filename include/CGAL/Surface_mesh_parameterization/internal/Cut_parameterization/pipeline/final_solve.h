@@ -2,7 +2,8 @@
 // border crossed put back to a valid start, or cut into overlap-free
 // pieces), then the box's solve; beside it, the same seams rerouted
 // (final_solve_with_rerouting()); after greedy splits, the pieces' solve
-// (final_solve_after_splits()). Box and barrier are arguments.
+// (final_solve_after_splits()); the box's fit of a map carried from a copy
+// solved under it (carried_box_solve()). Box and barrier are arguments.
 #ifndef CGAL_SMP_CUT_INTERNAL_FINAL_SOLVE_H
 #define CGAL_SMP_CUT_INTERNAL_FINAL_SOLVE_H
 

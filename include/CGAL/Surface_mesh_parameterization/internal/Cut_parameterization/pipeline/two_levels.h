@@ -129,16 +129,18 @@ inline bool carried_under_the_box(const Carried_map& carried)
 }
 
 /// The map of a copy of about `faces` faces simplified from the cut mesh in
-/// `state` keeping its cuts, solved there by final_solve() under `final`
-/// without box and without cutting charts into pieces, then carried back to
-/// `state.chart` by undo_collapses() and relaxed where the carrying crushed
-/// faces (relax_carried_map()). The copy starts from its Tutte map, or,
-/// where `faces` is at least tuning::solved_copy_level_ratio times
-/// `smallest`, from a copy of its own of that ratio fewer faces solved the
-/// same way (start_from_solved_copy()): each level starts near its solution.
-/// Returns the number of charts of `state` on which `carried` is valid (no
-/// flip, no crossing border); 0 where the copy could not be made, cut as the
-/// input or solved.
+/// `state` keeping its cuts, solved there under `final` without cutting
+/// charts into pieces, then carried back to `state.chart` by
+/// undo_collapses() and relaxed where the carrying crushed faces
+/// (relax_carried_map()). The copy starts from its Tutte map and runs
+/// final_solve(), box included (its budget judged there), or, where `faces`
+/// is at least tuning::solved_copy_level_ratio times `smallest`, from a
+/// copy of its own of that ratio fewer faces solved the same way
+/// (start_from_solved_copy()): each level starts near its solution, and one
+/// carried under the box only runs carried_box_solve(). `carried.box_stiffness`
+/// is the box the copy's map was solved under. Returns the number of charts
+/// of `state` on which `carried` is valid (no flip, no crossing border); 0
+/// where the copy could not be made, cut as the input or solved.
 template <typename Surface>
 int solved_copy_map(const Surface& surface, const std::vector<double>& face_lambda, std::size_t faces,
                     std::size_t smallest, const Final_solve_args& final, const Map_state& state, Work_log& log,
