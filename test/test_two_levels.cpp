@@ -43,6 +43,22 @@ void make_cut_torus(Cut_torus& torus)
   ASSERT_EQ(ic::initial_map(torus.surface, torus.state), SMP::OK);
 }
 
+/// The two-level torus with its initial cut mesh (make_cut_torus()) and
+/// seam costs 1.
+class TwoLevelsTorus : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    make_cut_torus(torus);
+    face_lambda.assign(surface.number_of_faces(), 1.);
+  }
+
+  Cut_torus torus;
+  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
+  std::vector<double> face_lambda;
+};
+
 /// The input's initial cut mesh (Tutte map) in `state` and a copy of
 /// `faces` faces keeping its cut, its collapses recorded, and the copy's own
 /// initial cut mesh in `coarse_state`.
@@ -59,21 +75,22 @@ void initial_cut_and_copy(const ic::Indexed_surface<Surface_mesh>& surface, std:
   ASSERT_TRUE(coarse_state.is_cut == coarse.is_cut); // the copy is cut where the input is
 }
 
-/// The two-level torus, indexed, with its initial cut mesh and a copy (initial_cut_and_copy()).
-struct Torus_with_copy
+/// The two-level torus, indexed, with its initial cut mesh and a copy of
+/// 1000 faces (initial_cut_and_copy()).
+class TwoLevelsCopy : public ::testing::Test
 {
+protected:
+  void SetUp() override
+  {
+    ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+    initial_cut_and_copy(surface, 1000, state, coarse, coarse_state);
+  }
+
   Surface_mesh mesh = make_mesh<Surface_mesh>(two_level_torus());
   ic::Indexed_surface<Surface_mesh> surface;
   ic::Map_state state, coarse_state;
   ic::Coarse_surface coarse;
 };
-
-void make_torus_with_copy(Torus_with_copy& torus, std::size_t faces)
-{
-  ASSERT_TRUE(ic::index_surface(torus.mesh, get(CGAL::vertex_point, torus.mesh), torus.surface)
-              == ic::Indexing_status::OK);
-  initial_cut_and_copy(torus.surface, faces, torus.state, torus.coarse, torus.coarse_state);
-}
 
 } // namespace
 
@@ -81,14 +98,9 @@ void make_torus_with_copy(Torus_with_copy& torus, std::size_t faces)
 // faces asked for, the input's seams kept as seams with their vertices,
 // every removed vertex recorded once, in a collapse into a vertex of its
 // star, and the copy a manifold indexed without defect.
-TEST(TwoLevels, the_carried_copy_keeps_the_seams_and_records_every_collapse)
+TEST_F(TwoLevelsTorus, the_carried_copy_keeps_the_seams_and_records_every_collapse)
 {
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
   ic::Map_state& state = torus.state;
-  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Coarse_surface coarse;
   ASSERT_TRUE(ic::simplify_for_carrying(surface, state.is_cut, {}, face_lambda, 1000, coarse));
   const ic::Indexed_surface<ic::Coarse_mesh>& cs = coarse.surface;
@@ -122,14 +134,8 @@ TEST(TwoLevels, the_carried_copy_keeps_the_seams_and_records_every_collapse)
 // its map after the upper ε levels, the collapses undone give a map of the
 // input with no flipped face and no crossing, valid on every chart, that
 // leaves each vertex of the copy where the copy had it.
-TEST(TwoLevels, carried_map_has_no_flipped_face)
+TEST_F(TwoLevelsCopy, carried_map_has_no_flipped_face)
 {
-  Torus_with_copy torus;
-  make_torus_with_copy(torus, 1000);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
-  ic::Map_state &state = torus.state, &coarse_state = torus.coarse_state;
-  const ic::Coarse_surface& coarse = torus.coarse;
   SMP::Cut_parameterization_options o;
   for(int levels : {0, ic::number_of_eps_levels(o) - 1})
   {
@@ -173,14 +179,8 @@ TEST(TwoLevels, carried_map_has_no_flipped_face)
 // carried back (crushed faces), the energy of the flagged chart falls and
 // its worst face gets better, no face flips, the border vertices stay where
 // they were; a chart not flagged is left as it is.
-TEST(TwoLevels, the_carried_map_relaxed_is_less_distorted_and_keeps_its_border)
+TEST_F(TwoLevelsCopy, the_carried_map_relaxed_is_less_distorted_and_keeps_its_border)
 {
-  Torus_with_copy torus;
-  make_torus_with_copy(torus, 1000);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
-  ic::Map_state &state = torus.state, &coarse_state = torus.coarse_state;
-  const ic::Coarse_surface& coarse = torus.coarse;
   ic::Carried_map carried;
   ASSERT_TRUE(ic::undo_collapses(surface, coarse, coarse_state.chart, coarse_state.x, state.chart, carried));
   ASSERT_TRUE(carried.valid == std::vector<char>(1, 1));
@@ -277,15 +277,10 @@ TEST(TwoLevels, two_level_cuts_give_a_valid_cut_mesh)
 // and the input's solve under the
 // border barrier converges from it in fewer Newton iterations than from
 // the Tutte map, to the same E_d.
-TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
+TEST_F(TwoLevelsTorus, the_final_solve_starts_from_a_solved_copy)
 {
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
   ic::Map_state& state = torus.state;
   const ic::UV_vector tutte = state.x;
-  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Work_log log;
   ic::Carried_map from_copy;
   ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 1000, 1000, ic::Final_solve_args{}, state, log, &from_copy),
@@ -320,7 +315,7 @@ TEST(TwoLevels, the_final_solve_starts_from_a_solved_copy)
 // tuning::solved_copy_level_ratio times the faces of the one that starts its
 // solve (solved_copy_faces()): 640k faces from 160k, 40k and 10k; below 8
 // times the smallest, one copy of the smallest, as before the chain.
-TEST(TwoLevels, the_solved_copies_form_a_chain_on_large_meshes)
+TEST_F(TwoLevelsTorus, the_solved_copies_form_a_chain_on_large_meshes)
 {
   EXPECT_EQ(ic::solved_copy_faces(640000, 10000), 160000u);
   EXPECT_EQ(ic::solved_copy_faces(160000, 10000), 40000u);
@@ -332,11 +327,6 @@ TEST(TwoLevels, the_solved_copies_form_a_chain_on_large_meshes)
 
   // a copy of 2000 faces started from one of 500: every chart carried, no
   // flip, no crossing border, near the input's minimum as from one copy
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
-  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Map_state chain = torus.state, single = torus.state;
   ic::Work_log chain_log, single_log;
   ic::Carried_map from_chain, from_single;
@@ -363,13 +353,8 @@ TEST(TwoLevels, the_solved_copies_form_a_chain_on_large_meshes)
 // The same start from the cut mesh without a map (initial_cut_mesh(), as
 // the plan calls it): no Tutte map is needed where the copy starts every
 // chart, and the map is the one started from the Tutte map, bit for bit.
-TEST(TwoLevels, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
+TEST_F(TwoLevelsTorus, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
 {
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
-  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Map_state with_tutte = torus.state;
   ic::Map_state without_map = torus.state;
   ASSERT_EQ(ic::initial_cut_mesh(surface, without_map), SMP::OK);
@@ -392,11 +377,8 @@ TEST(TwoLevels, a_cut_mesh_without_a_map_starts_from_the_copy_alone)
 // map above tuning::tutte_restart_max_distortion is too distorted for it,
 // but the same map on a chart started from a solved copy (valid in the
 // carried map) is not: the carrying crushes a few faces only.
-TEST(TwoLevels, a_chart_started_from_the_copy_gets_the_barrier_from_the_first_solve)
+TEST_F(TwoLevelsTorus, a_chart_started_from_the_copy_gets_the_barrier_from_the_first_solve)
 {
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
   const ic::Map_state& state = torus.state;
   const ic::UV_vector shrunk = 0.01 * state.x; // E_d about 1e4
   ASSERT_GT(ic::mean_distortion(state.chart, shrunk), ic::tuning::tutte_restart_max_distortion);
@@ -417,13 +399,8 @@ TEST(TwoLevels, a_chart_started_from_the_copy_gets_the_barrier_from_the_first_so
 // iterations). The carried map says which box it was solved under; without
 // a box, none; a chart not carried sends the input back to the full final
 // solve.
-TEST(TwoLevels, the_box_is_decided_on_the_smallest_copy_and_carried)
+TEST_F(TwoLevelsTorus, the_box_is_decided_on_the_smallest_copy_and_carried)
 {
-  Cut_torus torus;
-  make_cut_torus(torus);
-  ASSERT_FALSE(HasFatalFailure());
-  const ic::Indexed_surface<Surface_mesh>& surface = torus.surface;
-  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
   ic::Final_solve_args boxed;
   boxed.box.aspect_ratio = 1.;
   boxed.box.stiffness = SMP::gentle_bounding_box_stiffness;
