@@ -311,7 +311,7 @@ std::string cholesky_name()
   name += ", LLT (METIS) from " + std::to_string(Solver::metis_threshold) + " unknowns";
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-  name += ", CHOLMOD supernodal from " + std::to_string(Solver::cholmod_threshold) + " unknowns";
+  name += ", CHOLMOD supernodal from " + std::to_string(Solver::cholmod_threshold()) + " unknowns";
 #endif
   return name;
 }

@@ -71,7 +71,7 @@ TEST(Determinism_large, default_mode_above_the_metis_threshold)
 TEST(Determinism_large, bound_mode_above_the_cholmod_threshold)
 {
   const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(40, 102, 1., 0.2));
-  ASSERT_GE(unknowns_at_least(mesh), long(ic::Sparse_cholesky::cholmod_threshold));
+  ASSERT_GE(unknowns_at_least(mesh), long(ic::Sparse_cholesky::cholmod_threshold()));
   namespace P = SMP::parameters;
   const double bound = 4.4;
   {
@@ -114,7 +114,7 @@ TEST(Determinism_large, bound_mode_above_the_cholmod_threshold_long)
   if(!std::getenv("CUT_PARAM_LONG_TESTS"))
     GTEST_SKIP() << "long (165 s of CPU): set CUT_PARAM_LONG_TESTS=1 to run it";
   const Surface_mesh mesh = make_mesh<Surface_mesh>(spike_disk_soup(40, 102, 1.5, 0.2));
-  ASSERT_GE(unknowns_at_least(mesh), long(ic::Sparse_cholesky::cholmod_threshold));
+  ASSERT_GE(unknowns_at_least(mesh), long(ic::Sparse_cholesky::cholmod_threshold()));
   namespace P = SMP::parameters;
   expect_same_result_for_thread_counts(mesh, {1, 2, 4}, [&](Cut_run<Surface_mesh>& run) {
     const auto& result = run.run(P::distortion_bound(4.6, lean_options()));

@@ -406,7 +406,7 @@ TEST(TutteAndOptimizer, sparse_cholesky_solves_large_systems)
   // LLT when built with METIS, else AMD): the solver gives the solution of
   // Eigen's AMD LDLT, with a tiny residual, and refactors a matrix of the
   // same pattern
-  for(const int side : {int(std::sqrt(0.9 * double(ic::Sparse_cholesky::cholmod_threshold))),
+  for(const int side : {int(std::sqrt(0.9 * double(ic::Sparse_cholesky::cholmod_threshold()))),
                         int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::metis_threshold)))) + 1})
   {
     SCOPED_TRACE("grid side " + std::to_string(side));
@@ -438,7 +438,7 @@ TEST(TutteAndOptimizer, sparse_cholesky_reads_the_lower_triangle_of_any_storage)
   // value): a matrix stored whole (both triangles, the upper one spoiled so
   // that reading it would show) and one left uncompressed give the solution
   // of the lower triangle alone, and refactorize after new values
-  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold)))) + 1, n = side * side;
+  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold())))) + 1, n = side * side;
   const ic::Sparse_matrix lower = screened_grid_laplacian(side, 4.5);
   ic::Sparse_matrix whole = lower.selfadjointView<Eigen::Lower>();
   for(int col = 0; col < n; ++col)
@@ -482,7 +482,7 @@ TEST(TutteAndOptimizer, serial_openmp_scope_and_cholmod_keep_the_callers_openmp_
     EXPECT_EQ(omp_get_max_active_levels(), 0);
   }
   EXPECT_EQ(omp_get_max_active_levels(), 2);
-  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold)))) + 1, n = side * side;
+  const int side = int(std::ceil(std::sqrt(double(ic::Sparse_cholesky::cholmod_threshold())))) + 1, n = side * side;
   const ic::Sparse_matrix A = screened_grid_laplacian(side, 5.);
   Eigen::VectorXd b(n), x;
   for(int k = 0; k < n; ++k) b[k] = std::sin(0.07 * k);

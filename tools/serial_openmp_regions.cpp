@@ -57,6 +57,14 @@ extern "C" __attribute__((visibility("default"))) void GOMP_parallel(void (*fn)(
   else fn(data); // no OpenMP runtime behind: the region has one thread
 }
 
+// The library's question (openmp_regions_without_team() in linalg/Sparse_cholesky.h): true where
+// this definition is the one the process calls (not where libgomp was loaded before this program's
+// object, as in Blender)
+extern "C" __attribute__((visibility("default"))) int cut_param_openmp_regions_without_team()
+{
+  return dlsym(RTLD_DEFAULT, "GOMP_parallel") == reinterpret_cast<void*>(&GOMP_parallel) ? 1 : 0;
+}
+
 namespace cut_tools {
 
 unsigned long openmp_regions_run_serially() { return regions_run_here.load(std::memory_order_relaxed); }

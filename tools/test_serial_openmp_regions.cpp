@@ -1,7 +1,8 @@
 // The programs' OpenMP regions of one thread (serial_openmp_regions.cpp):
 // this program's GOMP_parallel is the one the process calls; a region that
 // would have one thread runs on the calling thread without a team; any other
-// region still gets libgomp's threads; CHOLMOD's regions come here.
+// region still gets libgomp's threads; CHOLMOD's regions come here, and the
+// library then gives CHOLMOD smaller systems too.
 #include "serial_openmp_regions.h"
 
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Sparse_cholesky.h>
@@ -72,11 +73,11 @@ TEST(SerialOpenmpRegions, other_regions_get_their_threads)
 }
 #endif
 
-// A factorization above tuning::cholmod_threshold unknowns: the right
-// solution, and (with CHOLMOD) its regions run here.
-TEST(SerialOpenmpRegions, a_large_factorization_solves_and_its_regions_run_here)
+// A grid Laplacian plus the identity, of side x side unknowns, factored:
+// the right solution; returns the regions run here meanwhile.
+unsigned long factor_a_grid(int side, bool& cheap_solves)
 {
-  const int side = 100, n = side * side; // a grid Laplacian plus the identity
+  const int n = side * side;
   std::vector<Eigen::Triplet<double>> entries;
   for(int i = 0; i < side; ++i)
     for(int j = 0; j < side; ++j)
@@ -90,16 +91,47 @@ TEST(SerialOpenmpRegions, a_large_factorization_solves_and_its_regions_run_here)
   A.setFromTriplets(entries.begin(), entries.end());
   const unsigned long before = cut_tools::openmp_regions_run_serially();
   cut::Sparse_cholesky cholesky;
-  ASSERT_TRUE(cholesky.factorize(A));
+  EXPECT_TRUE(cholesky.factorize(A));
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1., 1.);
   Eigen::VectorXd x;
-  ASSERT_TRUE(cholesky.solve(b, x));
+  EXPECT_TRUE(cholesky.solve(b, x));
   const cut::Sparse_matrix full = A.selfadjointView<Eigen::Lower>();
   EXPECT_LT((full * x - b).norm(), 1e-10 * b.norm());
+  cheap_solves = cholesky.solves_are_cheap();
+  return cut_tools::openmp_regions_run_serially() - before;
+}
+
+// Above tuning::cholmod_threshold unknowns, CHOLMOD (its regions run here),
+// without reuse of old factors.
+TEST(SerialOpenmpRegions, a_large_factorization_solves_and_its_regions_run_here)
+{
+  bool cheap_solves = true;
+  const unsigned long regions = factor_a_grid(100, cheap_solves);
 #if CUT_PARAM_SERIAL_OPENMP_REGIONS && defined(CGAL_SMP_CUT_USE_CHOLMOD)
-  if(!cholesky.solves_are_cheap()) EXPECT_GT(cut_tools::openmp_regions_run_serially(), before);
+  EXPECT_GT(regions, 0u);
+  EXPECT_FALSE(cheap_solves);
 #else
-  (void)before;
+  (void)regions;
+#endif
+}
+
+// Where the regions run without a team, CHOLMOD takes systems from
+// tuning::cholmod_threshold_without_team unknowns, and below
+// tuning::cholmod_threshold its solves keep the reuse of old factors.
+TEST(SerialOpenmpRegions, mid_sized_systems_go_to_cholmod_without_a_team)
+{
+  namespace tuning = CGAL::Surface_mesh_parameterization::internal::cut::tuning;
+  bool cheap_solves = false;
+  const int side = 50; // 2,500 unknowns: between the two thresholds
+  static_assert(side * side >= tuning::cholmod_threshold_without_team && side * side < tuning::cholmod_threshold);
+  const unsigned long regions = factor_a_grid(side, cheap_solves);
+  EXPECT_TRUE(cheap_solves);
+#if CUT_PARAM_SERIAL_OPENMP_REGIONS && defined(CGAL_SMP_CUT_USE_CHOLMOD)
+  EXPECT_TRUE(cut::openmp_regions_without_team());
+  EXPECT_EQ(cut::Sparse_cholesky::cholmod_threshold(), tuning::cholmod_threshold_without_team);
+  EXPECT_GT(regions, 0u);
+#else
+  (void)regions;
 #endif
 }
 

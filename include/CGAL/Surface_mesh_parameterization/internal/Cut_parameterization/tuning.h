@@ -33,6 +33,9 @@ constexpr double collapse_discriminant_slack = 1e-12;
 constexpr std::ptrdiff_t metis_threshold = 30000;
 /// Unknowns from which CHOLMOD's supernodal factorization takes over (if built with it): faster from about 5k.
 constexpr std::ptrdiff_t cholmod_threshold = 8000;
+/// The same where the process runs OpenMP regions of one thread without a team (openmp_regions_without_team()):
+/// CHOLMOD's small regions then cost no system call, and it is faster from a few hundred unknowns.
+constexpr std::ptrdiff_t cholmod_threshold_without_team = 1000;
 /// CHOLMOD's supernode relaxation (columns; fraction of zeros): merged more eagerly than its defaults (4, 16, 48;
 /// 0.8, 0.1, 0.05), its work around each supernode outweighing the extra zeros.
 constexpr std::size_t cholmod_nrelax[3] = {12, 32, 96};

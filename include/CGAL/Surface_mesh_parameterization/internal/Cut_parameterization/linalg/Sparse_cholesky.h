@@ -27,6 +27,7 @@
 // runtime (Debian's CHOLMOD brings libgomp; weak references: null otherwise)
 extern "C" int omp_get_max_active_levels(void) __attribute__((weak));
 extern "C" void omp_set_max_active_levels(int) __attribute__((weak));
+#include <dlfcn.h>
 #endif
 #endif
 #ifdef CGAL_SMP_CUT_USE_METIS
@@ -73,6 +74,27 @@ public:
   Serial_openmp_scope(const Serial_openmp_scope&) = delete;
   Serial_openmp_scope& operator=(const Serial_openmp_scope&) = delete;
 };
+#endif
+
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+/// True if the process runs OpenMP regions of one thread on the calling
+/// thread without a team: a program that links the project's
+/// tools/serial_openmp_regions.cpp says so through the function
+/// `cut_param_openmp_regions_without_team()` (looked up once, by name).
+/// CHOLMOD's regions then cost no system call each.
+inline bool openmp_regions_without_team()
+{
+#if defined(__GNUC__) && defined(__ELF__)
+  static const bool answer = [] {
+    using Query = int (*)();
+    const Query query = reinterpret_cast<Query>(dlsym(RTLD_DEFAULT, "cut_param_openmp_regions_without_team"));
+    return query != nullptr && query() != 0;
+  }();
+  return answer;
+#else
+  return false;
+#endif
+}
 #endif
 
 class Sparse_cholesky
@@ -255,8 +277,16 @@ public:
   static constexpr Eigen::Index metis_threshold = tuning::metis_threshold;
 
   /// Unknowns from which CHOLMOD's supernodal factorization takes over (if
-  /// built with it).
-  static constexpr Eigen::Index cholmod_threshold = tuning::cholmod_threshold;
+  /// built with it): tuning::cholmod_threshold, or
+  /// tuning::cholmod_threshold_without_team where the process runs OpenMP
+  /// regions of one thread without a team (openmp_regions_without_team()).
+  static Eigen::Index cholmod_threshold()
+  {
+#ifdef CGAL_SMP_CUT_USE_CHOLMOD
+    if(openmp_regions_without_team()) return tuning::cholmod_threshold_without_team;
+#endif
+    return tuning::cholmod_threshold;
+  }
 
   /// Symbolic analysis; call again only when the pattern changes.
   /// `block_size`: see order(); 2 orders the (u, v) of each UV vertex
@@ -274,7 +304,7 @@ public:
       if(A.rows() >= metis_threshold) method_ = Method::METIS;
 #endif
 #ifdef CGAL_SMP_CUT_USE_CHOLMOD
-      if(A.rows() >= cholmod_threshold) method_ = Method::CHOLMOD;
+      if(A.rows() >= cholmod_threshold()) method_ = Method::CHOLMOD;
 #endif
     }
     analyzed_ = true;
@@ -294,8 +324,14 @@ public:
   /// True where a solve costs a small fraction of a factorization (the
   /// simplicial solvers), so that an old factorization pays as a
   /// preconditioner (Projected_newton_solver::reuse_factor()); not CHOLMOD's
-  /// supernodal solves (measured: see the manual, Design and measurements).
-  bool solves_are_cheap() const { return method_ != Method::CHOLMOD; }
+  /// supernodal solves of tuning::cholmod_threshold unknowns or more
+  /// (measured: see the manual, Design and measurements). Below, CHOLMOD
+  /// runs only where its regions cost no system call, and its solves are as
+  /// cheap as the simplicial ones.
+  bool solves_are_cheap() const
+  {
+    return method_ != Method::CHOLMOD || permuted_.rows() < tuning::cholmod_threshold;
+  }
 
   /// Numeric factorization of a matrix with the analyzed pattern.
   bool factorize(const Sparse_matrix& A)
