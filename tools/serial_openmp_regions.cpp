@@ -1,6 +1,6 @@
 // OpenMP regions that would run on one thread run on the calling thread,
 // without a team, in the programs of the project (uv_unwrap, the benchmark,
-// check_all_meshes, the Python module): linked into a program, this
+// the Python module and its C++ reference): linked into a program, this
 // definition of libgomp's entry point GOMP_parallel comes first in the
 // process's symbol lookup, so CHOLMOD's calls reach it.
 //
@@ -9,7 +9,7 @@
 // runs them with no active level (Serial_openmp_scope in
 // linalg/Sparse_cholesky.h), but libgomp still starts and ends a team of one
 // for each, whose last barrier makes a futex system call even with no
-// thread to wake: measures in serial_openmp_regions.h.
+// thread to wake (measures: the manual, "Linear solvers").
 //
 // A region is run here only where libgomp would give it one thread: one
 // thread asked (num_threads(1), or an if clause that is false), or no active
