@@ -21,6 +21,9 @@
 #include <limits>
 #include <map>
 #include <random>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace P = SMP::parameters;
@@ -401,6 +404,77 @@ TEST(Injectivity, border_barrier_hessian_is_positive_semidefinite)
   expect_psd(hessian_at(late, x));
   EXPECT_EQ(late.number_of_declared_pairs(), declared);
   check_gradient(late, x, 3);
+}
+
+/// The barrier searches its pairs in blocks of border vertices on all cores
+/// and reuses the pairs value() found for the gradient at the same map: on
+/// a chart with several blocks of border vertices, the energy, gradient,
+/// Hessian and step bound are the same bits on one thread as on all, and
+/// with the reuse as without it, also once update() changed ε in between.
+TEST(Injectivity, border_barrier_is_the_same_on_any_thread_count_and_with_its_reuse)
+{
+  Disk_chart chart;
+  make_disk_chart(flat_disk_soup(3, int(3 * ic::tuning::barrier_pair_block)), chart);
+  const ic::UV_vector x = squashed(chart, 0.002);
+  ic::UV_vector step = ic::UV_vector::Zero(x.size());
+  for(Eigen::Index i = 1; i < x.size(); i += 2) step[i] = -2. * x[i]; // the disk flat on its axis halfway
+  struct Outputs
+  {
+    double value = 0., step_bound = 0.;
+    Eigen::VectorXd gradient;
+    std::vector<double> hessian;
+    std::size_t pairs = 0;
+  };
+  // `value_first`: value() at x before the gradient (its pairs reused); `detour`: update() at another map
+  // and value() there first, then update() at x again (ε changed twice, the reuse must not apply)
+  auto outputs = [&](bool value_first, bool detour) {
+    ic::Border_barrier_term barrier(chart.mesh);
+    if(detour)
+    {
+      const ic::UV_vector y = squashed(chart, 0.004);
+      barrier.update(y);
+      barrier.value(y);
+      barrier.value(x);
+    }
+    barrier.update(x);
+    Outputs out;
+    if(value_first) out.value = barrier.value(x);
+    ic::Hessian_assembler hessian;
+    barrier.declare_elements(hessian);
+    hessian.finalize(int(x.size()));
+    out.gradient = Eigen::VectorXd::Zero(x.size());
+    barrier.add_gradient_and_hessian(x, out.gradient, hessian);
+    out.hessian.assign(hessian.matrix().valuePtr(), hessian.matrix().valuePtr() + hessian.matrix().nonZeros());
+    if(!value_first) out.value = barrier.value(x);
+    out.step_bound = barrier.max_step(x, step);
+    out.pairs = barrier.number_of_declared_pairs();
+    return out;
+  };
+  // after the detour the pattern holds the pairs declared there too (its Hessian differs in layout)
+  auto expect_same = [](const Outputs& a, const Outputs& b, bool same_pattern = true) {
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.step_bound, b.step_bound);
+    EXPECT_TRUE(a.gradient == b.gradient);
+    if(!same_pattern) return;
+    EXPECT_EQ(a.pairs, b.pairs);
+    EXPECT_TRUE(a.hessian == b.hessian);
+  };
+  const Outputs reference = outputs(false, false);
+  // the test means something: pairs in several blocks, energy, a contact within the step
+  ASSERT_TRUE(reference.pairs > 2 * ic::tuning::barrier_pair_block);
+  ASSERT_TRUE(reference.value > 0. && std::isfinite(reference.value));
+  ASSERT_TRUE(reference.step_bound > 0. && reference.step_bound <= 0.5);
+  ASSERT_TRUE(reference.gradient.norm() > 0.);
+  expect_same(outputs(true, false), reference);
+  expect_same(outputs(true, true), reference, false);
+  expect_same(outputs(true, true), outputs(false, true));
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    expect_same(outputs(false, false), reference);
+    expect_same(outputs(true, true), reference, false);
+  }
+#endif
 }
 
 /// Where the map squashes the border to a fraction of its 3D length (a Tutte

@@ -499,8 +499,9 @@ TEST(TutteAndOptimizer, serial_openmp_scope_and_cholmod_keep_the_callers_openmp_
 // The Hessian assembler builds the pattern of a sequence of elements again
 // by merging the elements after the kept leading ones (border barrier pairs
 // after the faces): the matrix, its values and the diagonal are those of a
-// fresh assembler given the same elements, through growing, shrinking and
-// changed trailing elements, a changed leading element and a new dimension.
+// fresh assembler given the same elements, through trailing elements added
+// to the last build's (merged into it), dropped or drawn anew, a changed
+// leading element and a new dimension.
 TEST(TutteAndOptimizer, hessian_assembler_merged_pattern_equals_a_fresh_one)
 {
   const int n = 60;
@@ -524,14 +525,23 @@ TEST(TutteAndOptimizer, hessian_assembler_merged_pattern_equals_a_fresh_one)
     }
     h.add_to_diagonal(0.5);
   };
-  for(int round = 0; round < 12; ++round)
+  auto random_element = [&](int e) {
+    return e % 3 == 0 ? std::vector<int>{dof(rng), dof(rng)} : std::vector<int>{dof(rng), dof(rng), dof(rng), dof(rng)};
+  };
+  std::vector<std::vector<int>> trailing;
+  for(int round = 0; round < 16; ++round)
   {
     SCOPED_TRACE("round " + std::to_string(round));
+    // rounds 0-3, 8-10 and 13-15 add trailing elements to those of the round before (the pattern
+    // built last is merged into), 4 and 11 draw them anew, 12 drops some; 6 changes a leading element
+    if(round == 4 || round == 11) trailing.clear();
+    if(round == 12) trailing.resize(trailing.size() / 2);
+    const int added = round == 5 || round == 6 || round == 7 || round == 12 ? 0 : 1 + (round * 17) % 7;
+    for(int e = 0; e < added; ++e) trailing.push_back(random_element(e));
+    if(round == 5 || round == 7) trailing = {random_element(1), random_element(2)};
     std::vector<std::vector<int>> elements = leading;
     if(round == 6) elements[3] = {dof(rng), dof(rng)}; // a leading element changed
-    const int trailing = (round * 17) % 23;
-    for(int e = 0; e < trailing; ++e) elements.push_back(e % 3 == 0 ? std::vector<int>{dof(rng), dof(rng)}
-                                                                     : std::vector<int>{dof(rng), dof(rng), dof(rng), dof(rng)});
+    elements.insert(elements.end(), trailing.begin(), trailing.end());
     const int dimension = round == 9 ? n + 4 : n;
     ic::Hessian_assembler fresh;
     build(kept, elements, dimension);

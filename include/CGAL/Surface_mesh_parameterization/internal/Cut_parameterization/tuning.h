@@ -58,6 +58,9 @@ constexpr double contact_linear_ratio = 1e-12;
 // energy/Border_barrier_term.h
 /// Barrier distance ε relative to the mean 3D border edge length.
 constexpr double barrier_relative_distance = 0.25;
+/// Border vertices per task of the barrier's pair search (Border_barrier_term::map_candidate_pairs()): a
+/// chart with fewer is searched on the calling thread.
+constexpr std::size_t barrier_pair_block = 256;
 /// Energy of a pair at ε/2 relative to the mean face area.
 constexpr double barrier_relative_weight = 1.;
 /// A border segment shorter in UV than this times the unsquashed ε is squashed: its ε follows its UV length.

@@ -29,11 +29,13 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/linalg/Hessian_assembler.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/mesh/Chart_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/tuning.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/util/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <unordered_map>
@@ -75,6 +77,27 @@ class Border_barrier_term : public Energy_term
   std::vector<int> elements_;                      // per declared pair
   std::vector<int> point_elements_;                // per border vertex: its 2x2 diagonal block
   int iterations_since_pattern_ = 0;
+  std::size_t epsilon_version_ = 0;                // changes whenever update() changes an ε
+
+  /// A pair closer than its ε, as for_each_close_pair() gives it.
+  struct Close_pair
+  {
+    int v, j;
+    double d, epsilon, s;
+    Vector2 n;
+  };
+  /// The close pairs of the last two maps value() saw (x, the ε version): the gradient and
+  /// Hessian are assembled at a map whose energy was just evaluated (after update(), or the
+  /// line search's accepted step, a longer trial possibly after it). Not for concurrent calls.
+  struct Close_pairs_at
+  {
+    std::vector<double> border_x; // the UVs of the border vertices (points_), all the pairs read
+    std::size_t epsilon_version = 0;
+    bool valid = false;
+    std::vector<Close_pair> pairs;
+  };
+  mutable std::array<Close_pairs_at, 2> close_pairs_at_;
+  mutable std::size_t next_close_pairs_ = 0;
 
   /// A segment shorter in UV than this fraction of the mean 3D border
   /// length (squashed by the map) has an ε in proportion to its UV length.
@@ -117,16 +140,15 @@ class Border_barrier_term : public Energy_term
     ddb = 2. * weight_ * (r * r + 2. * (r - 1.) * r) / (d * d);
   }
 
-  /// Calls f(v, segment) for each border vertex v and segment of its chart,
-  /// not incident to v, whose boxes meet, in an order that depends on the
-  /// positions only. The boxes hold each vertex at x and at x + dx (dx may
-  /// be null: x only); a vertex's box is grown by `factor` times its ε.
-  template <typename F>
-  void for_each_candidate_pair(const UV_vector& x, const UV_vector* dx, double factor, F&& f) const
+  /// The boxes of chart c's border vertices and segments: each vertex at x
+  /// and at x + dx (dx may be null: x only), a vertex's box grown by
+  /// `factor` times its ε.
+  void chart_boxes(int c, const UV_vector& x, const UV_vector* dx, double factor, std::vector<Box_2>& point_boxes,
+                   std::vector<Box_2>& segment_boxes) const
   {
     const double inf = std::numeric_limits<double>::infinity();
     auto box_of = [&](std::initializer_list<int> vertices, double grow) {
-      std::array<double, 4> box{inf, inf, -inf, -inf};
+      Box_2 box{inf, inf, -inf, -inf};
       for(int v : vertices)
         for(int end = 0; end < (dx ? 2 : 1); ++end)
         {
@@ -136,26 +158,101 @@ class Border_barrier_term : public Energy_term
         }
       return box;
     };
-    std::vector<std::array<double, 4>> point_boxes, segment_boxes;
-    for(int c = 0; c < number_of_charts_; ++c)
+    const std::vector<int>& chart_points = chart_points_[std::size_t(c)];
+    const std::vector<int>& chart_segments = chart_segment_ids_[std::size_t(c)];
+    point_boxes.resize(chart_points.size());
+    segment_boxes.resize(chart_segments.size());
+    for(std::size_t i = 0; i < chart_points.size(); ++i)
+      point_boxes[i] = box_of({points_[std::size_t(chart_points[i])]}, factor * point_epsilon_[std::size_t(chart_points[i])]);
+    for(std::size_t j = 0; j < chart_segments.size(); ++j)
     {
-      const std::vector<int>& chart_points = chart_points_[std::size_t(c)];
-      const std::vector<int>& chart_segments = chart_segment_ids_[std::size_t(c)];
-      point_boxes.resize(chart_points.size());
-      segment_boxes.resize(chart_segments.size());
-      for(std::size_t i = 0; i < chart_points.size(); ++i)
-        point_boxes[i] = box_of({points_[std::size_t(chart_points[i])]}, factor * point_epsilon_[std::size_t(chart_points[i])]);
-      for(std::size_t j = 0; j < chart_segments.size(); ++j)
-      {
-        const auto& seg = segments_[std::size_t(chart_segments[j])];
-        segment_boxes[j] = box_of({seg[0], seg[1]}, 0.);
-      }
-      for_each_overlapping_box_pair(point_boxes, segment_boxes, [&](int i, int k) {
-        const int v = points_[std::size_t(chart_points[std::size_t(i)])], j = chart_segments[std::size_t(k)];
+      const auto& seg = segments_[std::size_t(chart_segments[j])];
+      segment_boxes[j] = box_of({seg[0], seg[1]}, 0.);
+    }
+  }
+
+  /// Calls f(v, segment) for each candidate pair of chart c whose vertex is
+  /// one of its border vertices [first, last) (see for_each_candidate_pair()).
+  template <typename F>
+  void chart_candidate_pairs(int c, const Box_grid& grid, const std::vector<Box_2>& point_boxes, std::size_t first,
+                             std::size_t last, F&& f) const
+  {
+    const std::vector<int>& chart_points = chart_points_[std::size_t(c)];
+    const std::vector<int>& chart_segments = chart_segment_ids_[std::size_t(c)];
+    for(std::size_t i = first; i < last; ++i)
+      grid.query(int(i), point_boxes[i], [&](int, int k) {
+        const int v = points_[std::size_t(chart_points[i])], j = chart_segments[std::size_t(k)];
         const auto& seg = segments_[std::size_t(j)];
         if(v != seg[0] && v != seg[1] && v != segment_apex_[std::size_t(j)]) f(v, j);
       });
+  }
+
+  /// Calls f(v, segment) for each border vertex v and segment of its chart,
+  /// not incident to v, whose boxes meet (chart_boxes()), in an order that
+  /// depends on the positions only.
+  template <typename F>
+  void for_each_candidate_pair(const UV_vector& x, const UV_vector* dx, double factor, F&& f) const
+  {
+    std::vector<Box_2> point_boxes, segment_boxes;
+    for(int c = 0; c < number_of_charts_; ++c)
+    {
+      chart_boxes(c, x, dx, factor, point_boxes, segment_boxes);
+      const Box_grid grid(point_boxes, segment_boxes);
+      chart_candidate_pairs(c, grid, point_boxes, 0, point_boxes.size(), f);
     }
+  }
+
+  /// The pairs of for_each_candidate_pair(), each given to map(v, segment,
+  /// out), which appends to `out` what the pair gives; blocks of border
+  /// vertices run on all cores, their outputs joined in order: `out` is
+  /// the sequence one thread would give.
+  template <typename T, typename Map>
+  void map_candidate_pairs(const UV_vector& x, const UV_vector* dx, double factor, const Map& map,
+                           std::vector<T>& out) const
+  {
+    constexpr std::size_t block = tuning::barrier_pair_block;
+    out.clear();
+    std::vector<Box_2> point_boxes, segment_boxes;
+    std::vector<std::vector<T>> block_out;
+    for(int c = 0; c < number_of_charts_; ++c)
+    {
+      chart_boxes(c, x, dx, factor, point_boxes, segment_boxes);
+      const Box_grid grid(point_boxes, segment_boxes);
+      const std::size_t n = point_boxes.size();
+      if(n <= block)
+      {
+        chart_candidate_pairs(c, grid, point_boxes, 0, n, [&](int v, int j) { map(v, j, out); });
+        continue;
+      }
+      block_out.resize((n + block - 1) / block);
+      parallel_tasks(block_out.size(), [&](std::size_t b) {
+        std::vector<T>& o = block_out[b];
+        o.clear();
+        chart_candidate_pairs(c, grid, point_boxes, b * block, (std::min)(n, (b + 1) * block),
+                              [&](int v, int j) { map(v, j, o); });
+      });
+      for(const std::vector<T>& o : block_out) out.insert(out.end(), o.begin(), o.end());
+    }
+  }
+
+  /// The pair (v, segment j) if it is closer than factor ε at x.
+  bool close_pair(const UV_vector& x, int v, int j, double factor, Close_pair& pair) const
+  {
+    const auto& seg = segments_[std::size_t(j)];
+    pair.v = v;
+    pair.j = j;
+    pair.epsilon = epsilon(v, j);
+    pair.d = point_segment_distance(point(x, v), point(x, seg[0]), point(x, seg[1]), pair.s, pair.n);
+    return pair.d < factor * pair.epsilon;
+  }
+
+  /// The pairs of for_each_candidate_pair() closer than factor ε at x, in its order.
+  void close_pairs(const UV_vector& x, double factor, std::vector<Close_pair>& out) const
+  {
+    map_candidate_pairs(x, nullptr, factor, [&](int v, int j, std::vector<Close_pair>& o) {
+      Close_pair pair;
+      if(close_pair(x, v, j, factor, pair)) o.push_back(pair);
+    }, out);
   }
 
   /// Calls f(v, segment, d, ε, s, n) for each pair of for_each_candidate_pair()
@@ -164,12 +261,8 @@ class Border_barrier_term : public Energy_term
   void for_each_close_pair(const UV_vector& x, F&& f, double factor = 1.) const
   {
     for_each_candidate_pair(x, nullptr, factor, [&](int v, int j) {
-      const auto& seg = segments_[j];
-      const double epsilon = this->epsilon(v, j);
-      double s;
-      Vector2 n;
-      const double d = point_segment_distance(point(x, v), point(x, seg[0]), point(x, seg[1]), s, n);
-      if(d < factor * epsilon) f(v, j, d, epsilon, s, n);
+      Close_pair pair;
+      if(close_pair(x, v, j, factor, pair)) f(v, j, pair.d, pair.epsilon, pair.s, pair.n);
     });
   }
 
@@ -290,13 +383,15 @@ public:
       for(int v : {a, b})
         point_epsilon_[point_of_[v]] = (std::min)(point_epsilon_[point_of_[v]], segment_epsilon_[j]);
     }
+    if(changed) ++epsilon_version_;
     ++iterations_since_pattern_;
-    std::vector<std::array<int, 2>> found;
-    std::size_t fresh = 0; // closer than ε, not declared
-    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double, const Vector2&) {
-      found.push_back({v, j});
-      if(d < epsilon && declared_pair(v, j) < 0) ++fresh;
-    }, 2.);
+    std::vector<std::array<int, 3>> found; // (v, segment, fresh: closer than ε and not declared)
+    map_candidate_pairs(x, nullptr, 2., [&](int v, int j, std::vector<std::array<int, 3>>& o) {
+      Close_pair pair;
+      if(close_pair(x, v, j, 2., pair)) o.push_back({v, j, int(pair.d < pair.epsilon && declared_pair(v, j) < 0)});
+    }, found);
+    std::size_t fresh = 0;
+    for(const auto& pair : found) fresh += std::size_t(pair[2]);
     if(fresh == 0 || (double(fresh) < pattern_growth * double(pairs_.size())
                       && iterations_since_pattern_ < pattern_delay))
       return changed ? Update::VALUES : Update::NONE;
@@ -339,13 +434,29 @@ public:
 
   double value(const UV_vector& x) const override
   {
-    if(has_crossing(x)) return std::numeric_limits<double>::infinity();
+    // the crossing test and the close pairs at once: neither reads what the other writes
+    bool crossing = false;
+    Close_pairs_at& at = close_pairs_at_[next_close_pairs_];
+    at.valid = false;
+    at.pairs.clear();
+    parallel_invoke([&] { crossing = has_crossing(x); }, [&] { close_pairs(x, 1., at.pairs); });
+    if(crossing) return std::numeric_limits<double>::infinity();
+    at.border_x.resize(2 * points_.size());
+    for(std::size_t i = 0; i < points_.size(); ++i)
+    {
+      at.border_x[2 * i] = x[2 * points_[i]];
+      at.border_x[2 * i + 1] = x[2 * points_[i] + 1];
+    }
+    at.epsilon_version = epsilon_version_;
+    at.valid = true;
+    next_close_pairs_ = 1 - next_close_pairs_;
     double energy = 0.;
-    for_each_close_pair(x, [&](int, int, double d, double epsilon, double, const Vector2&) {
+    for(const Close_pair& p : at.pairs)
+    {
       double b, db, ddb;
-      barrier(d, epsilon, b, db, ddb);
+      barrier(p.d, p.epsilon, b, db, ddb);
       energy += b;
-    });
+    }
     return energy;
   }
 
@@ -363,12 +474,15 @@ public:
   double max_step(const UV_vector& x, const UV_vector& dx) const override
   {
     // boxes swept over the step t in [0, 1]
+    std::vector<double> contacts;
+    map_candidate_pairs(x, &dx, 0., [&](int v, int j, std::vector<double>& o) {
+      const auto& s = segments_[std::size_t(j)];
+      const double t = first_contact_time(point(x, v), point(dx, v), point(x, s[0]), point(dx, s[0]),
+                                          point(x, s[1]), point(dx, s[1]));
+      if(t < std::numeric_limits<double>::infinity()) o.push_back(t);
+    }, contacts);
     double t = std::numeric_limits<double>::infinity();
-    for_each_candidate_pair(x, &dx, 0., [&](int v, int j) {
-      const auto& s = segments_[j];
-      t = (std::min)(t, first_contact_time(point(x, v), point(dx, v), point(x, s[0]), point(dx, s[0]),
-                                           point(x, s[1]), point(dx, s[1])));
-    });
+    for(double c : contacts) t = (std::min)(t, c);
     return t;
   }
 
@@ -378,9 +492,23 @@ private:
   /// semi-definite), g being the gradient of d over the pair's three
   /// vertices; for a pair not in the pattern, the 2x2 diagonal blocks of
   /// that matrix.
+  /// The close pairs value() found at x with the ε of now, if it saw x (its border vertices) last
+  /// or the time before.
+  const std::vector<Close_pair>* saved_close_pairs(const UV_vector& x) const
+  {
+    auto same_border = [&](const Close_pairs_at& at) {
+      for(std::size_t i = 0; i < points_.size(); ++i)
+        if(std::memcmp(&at.border_x[2 * i], x.data() + 2 * points_[i], 2 * sizeof(double)) != 0) return false;
+      return true;
+    };
+    for(const Close_pairs_at& at : close_pairs_at_)
+      if(at.valid && at.epsilon_version == epsilon_version_ && same_border(at)) return &at.pairs;
+    return nullptr;
+  }
+
   void accumulate(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler* hessian) const
   {
-    for_each_close_pair(x, [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
+    auto add = [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
       double b, db, ddb;
       barrier(d, epsilon, b, db, ddb);
       Eigen::Matrix<double, 6, 1> g;
@@ -399,7 +527,11 @@ private:
       else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
         for(int c = 0; c < 3; ++c)
           hessian->add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));
-    });
+    };
+    const std::vector<Close_pair>* pairs = saved_close_pairs(x);
+    std::vector<Close_pair> found;
+    if(pairs == nullptr) close_pairs(x, 1., found);
+    for(const Close_pair& p : pairs != nullptr ? *pairs : found) add(p.v, p.j, p.d, p.epsilon, p.s, p.n);
   }
 };
 

@@ -31,14 +31,40 @@ class Hessian_assembler
   Sparse_matrix matrix_;
   int dimension_ = 0;
 
-  // The kept pattern: the full diagonal and the first base_elements_ elements of an earlier build.
-  std::vector<int> base_dofs_, base_dof_start_{0};
-  std::size_t base_elements_ = 0;
-  int base_dimension_ = -1;
-  std::vector<int> base_outer_, base_inner_; // compressed columns, lower triangle
-  std::vector<int> base_slots_, base_diagonal_; // slots of its elements and diagonal within it
+  // A kept pattern: the full diagonal and the first `elements` elements of an earlier build.
+  struct Kept_pattern
+  {
+    std::vector<int> dofs, dof_start{0};
+    std::size_t elements = 0;
+    int dimension = -1;
+    std::vector<int> outer, inner;    // compressed columns, lower triangle
+    std::vector<int> slots, diagonal; // slots of its elements and diagonal within it
+
+    /// Its leading elements that are those of (dofs, dof_start) for a matrix of `of_dimension`.
+    std::size_t leading(const std::vector<int>& other_dofs, const std::vector<int>& other_start,
+                        int of_dimension) const
+    {
+      if(dimension != of_dimension) return 0;
+      std::size_t same = 0;
+      const std::size_t others = other_start.size() - 1;
+      while(same < (std::min)(others, elements))
+      {
+        const int b = dof_start[same], n = dof_start[same + 1] - b;
+        if(other_start[same] != b || other_start[same + 1] - b != n
+           || !std::equal(other_dofs.begin() + b, other_dofs.begin() + b + n, dofs.begin() + b))
+          break;
+        ++same;
+      }
+      return same;
+    }
+  };
+  // base_: the pattern merged into (the last build whole, so that the next merges only the
+  // elements added since: the border barrier's pairs grow a few at a time); root_: the pattern
+  // last built from scratch, taken again where the elements after its own changed
+  Kept_pattern base_, root_;
   std::vector<int> base_to_new_;             // index of each of its entries in matrix_
   std::vector<int> extra_start_, extra_rows_, fill_; // entries merged in, by column
+  std::vector<int> last_column_of_row_;              // merge(): the last column a row was met in
   std::vector<int> outer_, inner_;                   // the merged pattern
 
 public:
@@ -60,11 +86,18 @@ public:
   {
     dimension_ = dimension;
     const std::size_t elements = dof_start_.size() - 1;
-    std::size_t same = 0; // leading elements equal to the kept pattern's
-    if(base_dimension_ == dimension)
-      while(same < (std::min)(elements, base_elements_) && same_element(same)) ++same;
-    if(base_dimension_ != dimension || same < base_elements_)
-      build_base(base_dimension_ == dimension ? same : elements);
+    if(base_.leading(dofs_, dof_start_, dimension) < base_.elements || base_.dimension != dimension)
+    {
+      if(root_.dimension == dimension && root_.leading(dofs_, dof_start_, dimension) == root_.elements)
+        base_ = root_;
+      else
+      {
+        // leading elements equal to the last build's (all, for a new dimension)
+        const std::size_t same = base_.dimension == dimension ? base_.leading(dofs_, dof_start_, dimension) : elements;
+        build_base(same);
+        root_ = base_;
+      }
+    }
     merge_others();
 
     slot_start_.resize(elements);
@@ -76,13 +109,23 @@ public:
       count += n * n;
     }
     slots_.resize(count);
-    const std::size_t base_slots = base_slots_.size();
+    const std::size_t base_slots = base_.slots.size();
     for(std::size_t s = 0; s < base_slots; ++s)
-      slots_[s] = base_slots_[s] < 0 ? -1 : base_to_new_[std::size_t(base_slots_[s])];
-    for(std::size_t e = base_elements_; e < elements; ++e)
+      slots_[s] = base_.slots[s] < 0 ? -1 : base_to_new_[std::size_t(base_.slots[s])];
+    for(std::size_t e = base_.elements; e < elements; ++e)
       element_slots(e, matrix_.outerIndexPtr(), matrix_.innerIndexPtr(), slots_.data() + slot_start_[e]);
     diagonal_slots_.resize(std::size_t(dimension));
-    for(std::size_t d = 0; d < std::size_t(dimension); ++d) diagonal_slots_[d] = base_to_new_[std::size_t(base_diagonal_[d])];
+    for(std::size_t d = 0; d < std::size_t(dimension); ++d) diagonal_slots_[d] = base_to_new_[std::size_t(base_.diagonal[d])];
+    if(elements > base_.elements) // this build becomes the pattern the next one merges into
+    {
+      base_.dofs = dofs_;
+      base_.dof_start = dof_start_;
+      base_.elements = elements;
+      base_.outer = outer_;
+      base_.inner = inner_;
+      base_.slots = slots_;
+      base_.diagonal = diagonal_slots_;
+    }
   }
 
   int dimension() const { return dimension_; }
@@ -126,38 +169,31 @@ private:
     return int(dof_start_.size()) - 2;
   }
 
-  bool same_element(std::size_t e) const
-  {
-    const int b = base_dof_start_[e], n = base_dof_start_[e + 1] - b;
-    return dof_start_[e] == b && dof_start_[e + 1] - dof_start_[e] == n
-           && std::equal(dofs_.begin() + b, dofs_.begin() + b + n, base_dofs_.begin() + b);
-  }
-
-  /// The kept pattern from the diagonal and the first `elements` elements.
+  /// base_: the pattern of the diagonal and the first `elements` elements.
   void build_base(std::size_t elements)
   {
-    base_dimension_ = dimension_;
-    base_elements_ = elements;
-    base_dof_start_.assign(dof_start_.begin(), dof_start_.begin() + std::ptrdiff_t(elements) + 1);
-    base_dofs_.assign(dofs_.begin(), dofs_.begin() + base_dof_start_.back());
+    base_.dimension = dimension_;
+    base_.elements = elements;
+    base_.dof_start.assign(dof_start_.begin(), dof_start_.begin() + std::ptrdiff_t(elements) + 1);
+    base_.dofs.assign(dofs_.begin(), dofs_.begin() + base_.dof_start.back());
     const std::size_t columns = std::size_t(dimension_);
     std::vector<int> diagonal_outer(columns + 1), diagonal_inner(columns);
     for(int d = 0; d <= dimension_; ++d) diagonal_outer[std::size_t(d)] = d;
     for(int d = 0; d < dimension_; ++d) diagonal_inner[std::size_t(d)] = d;
-    merge(0, elements, diagonal_outer, diagonal_inner, base_outer_, base_inner_, base_diagonal_);
-    base_slots_.clear();
+    merge(0, elements, diagonal_outer, diagonal_inner, base_.outer, base_.inner, base_.diagonal);
+    base_.slots.clear();
     for(std::size_t e = 0; e < elements; ++e)
     {
-      const std::size_t n = std::size_t(base_dof_start_[e + 1] - base_dof_start_[e]);
-      base_slots_.resize(base_slots_.size() + n * n);
-      element_slots(e, base_outer_.data(), base_inner_.data(), base_slots_.data() + base_slots_.size() - n * n);
+      const std::size_t n = std::size_t(base_.dof_start[e + 1] - base_.dof_start[e]);
+      base_.slots.resize(base_.slots.size() + n * n);
+      element_slots(e, base_.outer.data(), base_.inner.data(), base_.slots.data() + base_.slots.size() - n * n);
     }
   }
 
   /// matrix_: the kept pattern with the entries of the elements after it.
   void merge_others()
   {
-    merge(base_elements_, dof_start_.size() - 1, base_outer_, base_inner_, outer_, inner_, base_to_new_);
+    merge(base_.elements, dof_start_.size() - 1, base_.outer, base_.inner, outer_, inner_, base_to_new_);
     matrix_.resize(dimension_, dimension_);
     matrix_.resizeNonZeros(Eigen::Index(inner_.size()));
     std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());
@@ -190,10 +226,20 @@ private:
     merged_outer.assign(columns + 1, 0);
     merged_inner.clear();
     merged_inner.reserve(inner.size() + extra_rows_.size());
+    last_column_of_row_.assign(columns, -1);
     for(std::size_t col = 0; col < columns; ++col)
     {
       int* x = extra_rows_.data() + extra_start_[col];
-      int* const x_end = extra_rows_.data() + extra_start_[col + 1];
+      int* x_end = extra_rows_.data() + extra_start_[col + 1];
+      // each row once before the sort: neighbouring elements repeat most entries
+      int* unique_end = x;
+      for(int* r = x; r != x_end; ++r)
+        if(last_column_of_row_[std::size_t(*r)] != int(col))
+        {
+          last_column_of_row_[std::size_t(*r)] = int(col);
+          *unique_end++ = *r;
+        }
+      x_end = unique_end;
       std::sort(x, x_end);
       int b = outer[col];
       const int b_end = outer[col + 1];
