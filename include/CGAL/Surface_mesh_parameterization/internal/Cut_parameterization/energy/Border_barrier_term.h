@@ -79,7 +79,7 @@ class Border_barrier_term : public Energy_term
   int iterations_since_pattern_ = 0;
   std::size_t epsilon_version_ = 0;                // changes whenever update() changes an ε
 
-  /// A pair closer than its ε, as for_each_close_pair() gives it.
+  /// A pair closer than its ε (close_pair()).
   struct Close_pair
   {
     int v, j;
@@ -172,7 +172,7 @@ class Border_barrier_term : public Energy_term
   }
 
   /// Calls f(v, segment) for each candidate pair of chart c whose vertex is
-  /// one of its border vertices [first, last) (see for_each_candidate_pair()).
+  /// one of its border vertices [first, last) (see map_candidate_pairs()).
   template <typename F>
   void chart_candidate_pairs(int c, const Box_grid& grid, const std::vector<Box_2>& point_boxes, std::size_t first,
                              std::size_t last, F&& f) const
@@ -187,25 +187,11 @@ class Border_barrier_term : public Energy_term
       });
   }
 
-  /// Calls f(v, segment) for each border vertex v and segment of its chart,
-  /// not incident to v, whose boxes meet (chart_boxes()), in an order that
-  /// depends on the positions only.
-  template <typename F>
-  void for_each_candidate_pair(const UV_vector& x, const UV_vector* dx, double factor, F&& f) const
-  {
-    std::vector<Box_2> point_boxes, segment_boxes;
-    for(int c = 0; c < number_of_charts_; ++c)
-    {
-      chart_boxes(c, x, dx, factor, point_boxes, segment_boxes);
-      const Box_grid grid(point_boxes, segment_boxes);
-      chart_candidate_pairs(c, grid, point_boxes, 0, point_boxes.size(), f);
-    }
-  }
-
-  /// The pairs of for_each_candidate_pair(), each given to map(v, segment,
-  /// out), which appends to `out` what the pair gives; blocks of border
-  /// vertices run on all cores, their outputs joined in order: `out` is
-  /// the sequence one thread would give.
+  /// For each border vertex v and segment of its chart, not incident to v,
+  /// whose boxes meet (chart_boxes()): map(v, segment, out), which appends
+  /// to `out` what the pair gives. Blocks of border vertices run on all
+  /// cores, their outputs joined in order: `out` is the sequence one thread
+  /// would give, in an order that depends on the positions only.
   template <typename T, typename Map>
   void map_candidate_pairs(const UV_vector& x, const UV_vector* dx, double factor, const Map& map,
                            std::vector<T>& out) const
@@ -246,24 +232,13 @@ class Border_barrier_term : public Energy_term
     return pair.d < factor * pair.epsilon;
   }
 
-  /// The pairs of for_each_candidate_pair() closer than factor ε at x, in its order.
+  /// The pairs of map_candidate_pairs() closer than factor ε at x, in its order.
   void close_pairs(const UV_vector& x, double factor, std::vector<Close_pair>& out) const
   {
     map_candidate_pairs(x, nullptr, factor, [&](int v, int j, std::vector<Close_pair>& o) {
       Close_pair pair;
       if(close_pair(x, v, j, factor, pair)) o.push_back(pair);
     }, out);
-  }
-
-  /// Calls f(v, segment, d, ε, s, n) for each pair of for_each_candidate_pair()
-  /// closer than factor ε at x (point_segment_distance() gives d, s, n).
-  template <typename F>
-  void for_each_close_pair(const UV_vector& x, F&& f, double factor = 1.) const
-  {
-    for_each_candidate_pair(x, nullptr, factor, [&](int v, int j) {
-      Close_pair pair;
-      if(close_pair(x, v, j, factor, pair)) f(v, j, pair.d, pair.epsilon, pair.s, pair.n);
-    });
   }
 
 public:
@@ -340,13 +315,13 @@ public:
     std::vector<char> crossing(number_of_charts_, 0);
     for(int c = 0; c < number_of_charts_; ++c)
       crossing[c] = count_border_crossings(chart_segments_[std::size_t(c)], x, nullptr, 1, true) > 0;
-    for_each_candidate_pair(x, nullptr, 0., [&](int v, int j) {
-      double s;
-      Vector2 n;
-      const auto& seg = segments_[j];
-      if(!(point_segment_distance(point(x, v), point(x, seg[0]), point(x, seg[1]), s, n) > 0.))
-        crossing[std::size_t(segment_chart_[j])] = 1;
-    });
+    std::vector<int> touching; // segments a border vertex is on, as the barrier measures it
+    map_candidate_pairs(x, nullptr, 0., [&](int v, int j, std::vector<int>& o) {
+      Close_pair pair;
+      close_pair(x, v, j, 0., pair);
+      if(!(pair.d > 0.)) o.push_back(j);
+    }, touching);
+    for(int j : touching) crossing[std::size_t(segment_chart_[std::size_t(j)])] = 1;
     return crossing;
   }
 
@@ -413,10 +388,10 @@ public:
   /// Pairs closer than their ε at x that are not in the pattern.
   std::size_t number_of_undeclared_close_pairs(const UV_vector& x) const
   {
+    std::vector<Close_pair> found;
+    close_pairs(x, 1., found);
     std::size_t n = 0;
-    for_each_close_pair(x, [&](int v, int j, double, double, double, const Vector2&) {
-      n += declared_pair(v, j) < 0;
-    });
+    for(const Close_pair& p : found) n += declared_pair(p.v, p.j) < 0;
     return n;
   }
 

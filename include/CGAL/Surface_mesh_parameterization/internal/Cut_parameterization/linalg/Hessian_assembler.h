@@ -86,15 +86,14 @@ public:
   {
     dimension_ = dimension;
     const std::size_t elements = dof_start_.size() - 1;
-    if(base_.leading(dofs_, dof_start_, dimension) < base_.elements || base_.dimension != dimension)
+    const std::size_t same = base_.leading(dofs_, dof_start_, dimension); // 0 for a new dimension
+    if(base_.dimension != dimension || same < base_.elements)
     {
       if(root_.dimension == dimension && root_.leading(dofs_, dof_start_, dimension) == root_.elements)
         base_ = root_;
       else
       {
-        // leading elements equal to the last build's (all, for a new dimension)
-        const std::size_t same = base_.dimension == dimension ? base_.leading(dofs_, dof_start_, dimension) : elements;
-        build_base(same);
+        build_base(base_.dimension == dimension ? same : elements); // all, for a new dimension
         root_ = base_;
       }
     }
