@@ -2,8 +2,9 @@
 // border crossed put back to a valid start, or cut into overlap-free
 // pieces), then the box's solve; beside it, the same seams rerouted
 // (final_solve_with_rerouting()); after greedy splits, the pieces' solve
-// (final_solve_after_splits()); the box's fit of a map carried from a copy
-// solved under it (carried_box_solve()). Box and barrier are arguments.
+// (final_solve_after_splits()); from a map carried from a solved copy, the
+// box's fit where the copy was solved under it (carried_box_solve(),
+// final_solve_from_carried()). Box and barrier are arguments.
 #ifndef CGAL_SMP_CUT_INTERNAL_FINAL_SOLVE_H
 #define CGAL_SMP_CUT_INTERNAL_FINAL_SOLVE_H
 
@@ -357,6 +358,35 @@ Error_code final_solve(const Surface& surface, const Final_solve_args& args, boo
   const Error_code status = final_solve_without_box(surface, args, from_tutte_map, state, log, unboxed, carried);
   if(restarted != nullptr) *restarted = unboxed.restart;
   return status != OK ? status : final_solve_box(args, unboxed, state, log, kept_stiffness);
+}
+
+/// True if `carried` starts every chart and was solved under the box: the
+/// finer mesh's final solve is then carried_box_solve() alone.
+inline bool carried_under_the_box(const Carried_map& carried)
+{
+  return !carried.valid.empty() && carried.box_stiffness > 0.
+         && std::find(carried.valid.begin(), carried.valid.end(), char(0)) == carried.valid.end();
+}
+
+/// The final solve of `state` started from `carried`, a map carried from a
+/// copy solved under `args` (`carried.valid`: the charts it starts, empty
+/// if none): where the copy was solved under the box
+/// (carried_under_the_box()), carried_box_solve() alone, followed by
+/// final_solve() from the fitted map if its E_d ends above `fit_limit`;
+/// else final_solve() from `carried`. `kept_stiffness`, if given, gets the
+/// stiffness of the box the result was solved under (0: none).
+template <typename Surface>
+Error_code final_solve_from_carried(const Surface& surface, const Final_solve_args& args, bool from_tutte_map,
+                                    const Carried_map& carried, double fit_limit, Map_state& state, Work_log& log,
+                                    double* kept_stiffness = nullptr)
+{
+  const Carried_map* start = carried.valid.empty() ? nullptr : &carried;
+  if(!carried_under_the_box(carried))
+    return final_solve(surface, args, from_tutte_map, state, log, start, nullptr, kept_stiffness);
+  const Error_code status = carried_box_solve(args, carried.box_stiffness, state, log);
+  if(kept_stiffness != nullptr) *kept_stiffness = carried.box_stiffness;
+  if(status != OK || !(mean_distortion(state.chart, state.x) > fit_limit)) return status;
+  return final_solve(surface, args, from_tutte_map, state, log, start, nullptr, kept_stiffness);
 }
 
 /// True if, with `global_injectivity`, a chart of `state` overlaps itself

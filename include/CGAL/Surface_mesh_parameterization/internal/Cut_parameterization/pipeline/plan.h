@@ -334,19 +334,13 @@ Error_code optimize_cut_mesh(const Surface& surface, const std::vector<double>& 
   }
   // no alternation ran on this mesh: the map is its Tutte map or one carried (a start for the barrier)
   const bool from_tutte_map = coarse || o.number_of_passes == 0;
-  // a chart started from the solved copy that crosses itself starts again from there, not from Tutte
-  if(carried_under_the_box(copy_start))
-  {
-    status = carried_box_solve(final, copy_start.box_stiffness, state, log);
-    // the box's budget was judged on the copy: above the ceiling or the default target here, the whole
-    // final solve (without box, then the box within its budget) from the fitted map
-    if(status == OK
-       && mean_distortion(state.chart, state.x) > (std::min)(final.box.ceiling, tuning::default_distortion_target))
-      status = final_solve(surface, final, from_tutte_map, state, log, &copy_start);
-  }
-  else
-    status = copy_start.valid.empty() ? final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log)
-                                      : final_solve(surface, final, from_tutte_map, state, log, &copy_start);
+  // a chart started from the solved copy that crosses itself starts again from there, not from Tutte;
+  // the box's budget was judged on the copy: above the ceiling or the default target here, the whole
+  // final solve (without box, then the box within its budget) from the fitted map
+  status = copy_start.valid.empty()
+             ? final_solve_rerouted(surface, final, run, user_cut, from_tutte_map, state, log)
+             : final_solve_from_carried(surface, final, from_tutte_map, copy_start,
+                                        (std::min)(final.box.ceiling, tuning::default_distortion_target), state, log);
   if(status != OK) return status;
   state.distortion = mean_distortion(state.chart, state.x);
   return split_where_distorted(surface, o, progress, run, final, state, log);

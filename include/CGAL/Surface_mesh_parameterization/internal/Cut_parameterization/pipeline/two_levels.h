@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -120,14 +121,6 @@ Error_code start_from_solved_copy(const Surface& surface, const std::vector<doub
                                   std::size_t smallest, const Final_solve_args& final, Map_state& state, Work_log& log,
                                   Carried_map* from_copy = nullptr);
 
-/// True if `carried` starts every chart and was solved under the box: the
-/// finer mesh's final solve is then carried_box_solve() alone.
-inline bool carried_under_the_box(const Carried_map& carried)
-{
-  return !carried.valid.empty() && carried.box_stiffness > 0.
-         && std::find(carried.valid.begin(), carried.valid.end(), char(0)) == carried.valid.end();
-}
-
 /// The map of a copy of about `faces` faces simplified from the cut mesh in
 /// `state` keeping its cuts, solved there under `final` without cutting
 /// charts into pieces, then carried back to `state.chart` by
@@ -163,13 +156,9 @@ int solved_copy_map(const Surface& surface, const std::vector<double>& face_lamb
                              : tutte_map(copy);
   if(start != OK) return 0;
   double box_stiffness = 0.;
-  if(carried_under_the_box(below))
-  {
-    if(carried_box_solve(copy_args, below.box_stiffness, copy, log) != OK) return 0;
-    box_stiffness = below.box_stiffness;
-  }
-  else if(final_solve(coarse.surface, copy_args, true, copy, log, below.valid.empty() ? nullptr : &below, nullptr,
-                      &box_stiffness) != OK)
+  if(final_solve_from_carried(coarse.surface, copy_args, true, below, std::numeric_limits<double>::infinity(), copy,
+                              log, &box_stiffness)
+     != OK)
     return 0;
   if(!undo_collapses(surface, coarse, copy.chart, copy.x, state.chart, carried)) return 0;
   relax_carried_map(state.chart, carried.valid, carried.x);
