@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/two_levels.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -444,4 +445,62 @@ TEST_F(TwoLevelsTorus, the_box_is_decided_on_the_smallest_copy_and_carried)
   ic::Carried_map partly = from_boxed;
   partly.valid.push_back(0);
   EXPECT_FALSE(ic::carried_under_the_box(partly));
+}
+
+// final_solve_from_carried(), the plan's and each copy's start from a solved
+// copy: a map solved under the box is only fitted (within
+// tuning::carried_box_iterations), unless its E_d ends above the limit,
+// then the whole final solve runs from it; a map solved without box gets
+// the whole final solve. Each result valid, the box it was solved under told.
+TEST_F(TwoLevelsTorus, a_start_from_a_solved_copy_is_fitted_under_its_box_or_solved_whole)
+{
+  ic::Final_solve_args boxed;
+  boxed.box.aspect_ratio = 1.;
+  boxed.box.stiffness = SMP::gentle_bounding_box_stiffness;
+  ic::Map_state start = torus.state, plain_start = torus.state;
+  ic::Work_log copy_log;
+  ic::Carried_map from_boxed, from_plain;
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 500, boxed, start, copy_log, &from_boxed), SMP::OK);
+  ASSERT_EQ(ic::start_from_solved_copy(surface, face_lambda, 2000, 500, ic::Final_solve_args{}, plain_start, copy_log,
+                                       &from_plain),
+            SMP::OK);
+  ASSERT_TRUE(ic::carried_under_the_box(from_boxed));
+  ASSERT_FALSE(ic::carried_under_the_box(from_plain));
+  auto valid = [](const ic::Map_state& s) {
+    const std::vector<char> crossing = ic::Border_barrier_term(s.chart).charts_with_crossing(s.x);
+    return s.x.allFinite() && ic::number_of_flipped_faces(s.chart, s.x) == 0
+           && std::none_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; });
+  };
+
+  // no limit: the fit alone
+  ic::Map_state fitted = start;
+  ic::Work_log fit_log;
+  double stiffness = -1.;
+  ASSERT_EQ(ic::final_solve_from_carried(surface, boxed, true, from_boxed, std::numeric_limits<double>::infinity(),
+                                         fitted, fit_log, &stiffness),
+            SMP::OK);
+  EXPECT_EQ(stiffness, from_boxed.box_stiffness);
+  EXPECT_GT(fit_log.box_work.iterations, 0u);
+  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::tuning::carried_box_iterations));
+  EXPECT_EQ(fit_log.final_work.iterations, 0u);
+  EXPECT_TRUE(valid(fitted));
+
+  // a limit below any E_d (4 is the least): the fit, then the whole final solve from it
+  ic::Map_state whole = start;
+  ic::Work_log whole_log;
+  ASSERT_EQ(ic::final_solve_from_carried(surface, boxed, true, from_boxed, 4., whole, whole_log, &stiffness), SMP::OK);
+  EXPECT_GT(whole_log.final_work.iterations, 0u);
+  EXPECT_GT(whole_log.box_work.iterations, fit_log.box_work.iterations);
+  EXPECT_TRUE(valid(whole));
+
+  // solved without box: the whole final solve from the carried map, no box asked, none told
+  ic::Map_state plain = plain_start;
+  ic::Work_log plain_log;
+  ASSERT_EQ(ic::final_solve_from_carried(surface, ic::Final_solve_args{}, true, from_plain,
+                                         std::numeric_limits<double>::infinity(), plain, plain_log, &stiffness),
+            SMP::OK);
+  EXPECT_EQ(stiffness, 0.);
+  EXPECT_GT(plain_log.final_work.iterations, 0u);
+  EXPECT_EQ(plain_log.box_work.iterations, 0u);
+  EXPECT_TRUE(valid(plain));
 }
