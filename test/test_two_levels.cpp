@@ -396,7 +396,7 @@ TEST_F(TwoLevelsTorus, a_chart_started_from_the_copy_gets_the_barrier_from_the_f
 // The box on a chain of solved copies: decided on the smallest copy (the
 // final solve there, its budget judged against the map without box), then
 // each larger copy and the input only fit the carried boxed map, by
-// carried_box_solve() (at most tuning::carried_box_iterations Newton
+// carried_box_solve() (at most carried_box_iterations() Newton
 // iterations). The carried map says which box it was solved under; without
 // a box, none; a chart not carried sends the input back to the full final
 // solve.
@@ -434,7 +434,7 @@ TEST_F(TwoLevelsTorus, the_box_is_decided_on_the_smallest_copy_and_carried)
   ic::Work_log fit_log;
   ASSERT_EQ(ic::carried_box_solve(boxed, from_boxed.box_stiffness, with_box, fit_log), SMP::OK);
   EXPECT_GT(fit_log.box_work.iterations, 0u);
-  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::tuning::carried_box_iterations));
+  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::carried_box_iterations(with_box.chart.number_of_faces())));
   EXPECT_TRUE(with_box.x.allFinite());
   EXPECT_EQ(ic::number_of_flipped_faces(with_box.chart, with_box.x), 0);
   const std::vector<char> crossing = ic::Border_barrier_term(with_box.chart).charts_with_crossing(with_box.x);
@@ -449,7 +449,7 @@ TEST_F(TwoLevelsTorus, the_box_is_decided_on_the_smallest_copy_and_carried)
 
 // final_solve_from_carried(), the plan's and each copy's start from a solved
 // copy: a map solved under the box is only fitted (within
-// tuning::carried_box_iterations), unless its E_d ends above the limit,
+// carried_box_iterations()), unless its E_d ends above the limit,
 // then the whole final solve runs from it; a map solved without box gets
 // the whole final solve. Each result valid, the box it was solved under told.
 TEST_F(TwoLevelsTorus, a_start_from_a_solved_copy_is_fitted_under_its_box_or_solved_whole)
@@ -481,7 +481,7 @@ TEST_F(TwoLevelsTorus, a_start_from_a_solved_copy_is_fitted_under_its_box_or_sol
             SMP::OK);
   EXPECT_EQ(stiffness, from_boxed.box_stiffness);
   EXPECT_GT(fit_log.box_work.iterations, 0u);
-  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::tuning::carried_box_iterations));
+  EXPECT_LE(fit_log.box_work.iterations, std::size_t(ic::carried_box_iterations(fitted.chart.number_of_faces())));
   EXPECT_EQ(fit_log.final_work.iterations, 0u);
   EXPECT_TRUE(valid(fitted));
 

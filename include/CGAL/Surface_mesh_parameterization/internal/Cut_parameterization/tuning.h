@@ -165,6 +165,10 @@ constexpr double large_mesh_box_tolerance = 1e-3;
 /// the box's solve of a map carried from a copy solved with the box: at most this many Newton iterations
 /// (the copy's box set the charts' shapes; each iteration a solve of the finer mesh)
 constexpr int carried_box_iterations = 8;
+/// ... and on a mesh of more than large_carried_box_faces faces, at most this many (there each iteration
+/// factors a Hessian of hundreds of thousands of unknowns, and the fit's E_d settles within these)
+constexpr int large_carried_box_iterations = 4;
+constexpr std::size_t large_carried_box_faces = 100000;
 /// the box's solve stops in a slow tail: after this many iterations, ...
 constexpr int box_slow_tail_after = 60;
 /// ... less than this ratio of the energy gained over this window (steps stopped at barrier contacts)

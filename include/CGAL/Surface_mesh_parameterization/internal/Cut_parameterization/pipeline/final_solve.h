@@ -334,15 +334,22 @@ inline Error_code final_solve_box(const Final_solve_args& args, const Unboxed_fi
   return status;
 }
 
+/// The Newton iterations at most of carried_box_solve() on a mesh of `faces` faces.
+inline int carried_box_iterations(std::size_t faces)
+{
+  return faces > tuning::large_carried_box_faces ? tuning::large_carried_box_iterations
+                                                 : tuning::carried_box_iterations;
+}
+
 /// The box's solve of `state`, a map carried from a copy solved under the
 /// box at `stiffness` (its budget judged there, final_solve_box()): under
-/// the barrier with global injectivity, at most
-/// tuning::carried_box_iterations Newton iterations. The copy's box set the
-/// charts' shapes; the solve fits them to this mesh.
+/// the barrier with global injectivity, at most carried_box_iterations()
+/// Newton iterations. The copy's box set the charts' shapes; the solve fits
+/// them to this mesh.
 inline Error_code carried_box_solve(const Final_solve_args& args, double stiffness, Map_state& state, Work_log& log)
 {
   Final_solve_args capped = args;
-  capped.max_iterations = (std::min)(args.max_iterations, tuning::carried_box_iterations);
+  capped.max_iterations = (std::min)(args.max_iterations, carried_box_iterations(state.chart.number_of_faces()));
   return final_minimization(capped, args.global_injectivity, stiffness, true, state, log);
 }
 
