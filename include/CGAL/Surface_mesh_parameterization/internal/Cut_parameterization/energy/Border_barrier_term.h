@@ -483,30 +483,30 @@ private:
 
   void accumulate(const UV_vector& x, Eigen::VectorXd& gradient, Hessian_assembler* hessian) const
   {
-    auto add = [&](int v, int j, double d, double epsilon, double s, const Vector2& n) {
+    const std::vector<Close_pair>* saved = saved_close_pairs(x);
+    std::vector<Close_pair> found;
+    if(saved == nullptr) close_pairs(x, 1., found);
+    for(const Close_pair& p : saved != nullptr ? *saved : found)
+    {
       double b, db, ddb;
-      barrier(d, epsilon, b, db, ddb);
+      barrier(p.d, p.epsilon, b, db, ddb);
       Eigen::Matrix<double, 6, 1> g;
-      g << n, -(1. - s) * n, -s * n;
-      const int ids[3] = {v, segments_[j][0], segments_[j][1]};
+      g << p.n, -(1. - p.s) * p.n, -p.s * p.n;
+      const int ids[3] = {p.v, segments_[p.j][0], segments_[p.j][1]};
       for(int c = 0; c < 3; ++c)
       {
         gradient[2*ids[c]] += db * g[2*c];
         gradient[2*ids[c]+1] += db * g[2*c+1];
       }
-      if(hessian == nullptr) return;
+      if(hessian == nullptr) continue;
       const Eigen::Matrix<double, 6, 6> block = ddb * g * g.transpose();
-      const int pair = declared_pair(v, j);
+      const int pair = declared_pair(p.v, p.j);
       if(pair >= 0)
         hessian->add(elements_[std::size_t(pair)], block);
       else // not in the pattern (yet): the diagonal blocks of a PSD matrix are PSD
         for(int c = 0; c < 3; ++c)
           hessian->add(point_elements_[point_of_[ids[c]]], block.block<2, 2>(2 * c, 2 * c));
-    };
-    const std::vector<Close_pair>* pairs = saved_close_pairs(x);
-    std::vector<Close_pair> found;
-    if(pairs == nullptr) close_pairs(x, 1., found);
-    for(const Close_pair& p : pairs != nullptr ? *pairs : found) add(p.v, p.j, p.d, p.epsilon, p.s, p.n);
+    }
   }
 };
 
