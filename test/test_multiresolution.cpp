@@ -132,6 +132,85 @@ TEST(Multiresolution, coarse_copy_is_deterministic_across_thread_counts)
   });
 }
 
+// The copy that decides the cuts of a very large mesh, made in two stages
+// (simplify_surface_in_two_stages()): about the faces asked for, every
+// vertex a distinct vertex of the input at its position, the user's seams
+// kept as edges of the copy between seam vertices of the input.
+TEST(Multiresolution, the_copy_in_two_stages_keeps_input_vertices_and_seams)
+{
+  const Soup soup = test_torus();
+  Surface_mesh mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  ic::Indexed_surface<Surface_mesh> surface;
+  ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+  // the meridian of the torus' cut as the input's seams
+  const std::vector<std::pair<std::size_t, std::size_t>> meridian(soup.cut.begin() + 72, soup.cut.end());
+  std::vector<char> is_cut(surface.edges.size(), 0), on_seam(surface.number_of_vertices(), 0);
+  const auto given = soup_edges(mesh, vertex_of, meridian);
+  for(int fe = 0; fe < int(surface.twin.size()); ++fe)
+    if(std::find(given.begin(), given.end(), surface.edges[std::size_t(surface.edge_of[std::size_t(fe)])]) != given.end())
+    {
+      is_cut[std::size_t(surface.edge_of[std::size_t(fe)])] = 1;
+      on_seam[std::size_t(surface.edge_source(fe))] = on_seam[std::size_t(surface.edge_target(fe))] = 1;
+    }
+  ASSERT_EQ(std::count(is_cut.begin(), is_cut.end(), char(1)), 32);
+  const std::vector<double> face_lambda(surface.number_of_faces(), 1.);
+  ic::Coarse_surface coarse;
+  ASSERT_TRUE(ic::simplify_surface_in_two_stages(surface, is_cut, {}, face_lambda, 2000, 300, coarse));
+  const auto& cs = coarse.surface;
+  EXPECT_LE(cs.number_of_faces(), std::size_t(330));
+  EXPECT_GE(cs.number_of_faces(), std::size_t(250));
+  ASSERT_EQ(coarse.fine_vertex.size(), cs.number_of_vertices());
+  std::vector<int> fine = coarse.fine_vertex;
+  std::sort(fine.begin(), fine.end());
+  EXPECT_TRUE(std::adjacent_find(fine.begin(), fine.end()) == fine.end());
+  for(std::size_t v = 0; v < cs.number_of_vertices(); ++v)
+  {
+    const int f = coarse.fine_vertex[v];
+    ASSERT_TRUE(f >= 0 && std::size_t(f) < surface.number_of_vertices());
+    EXPECT_TRUE(cs.points[v] == surface.points[std::size_t(f)]);
+  }
+  int seams = 0;
+  for(int fe = 0; fe < int(cs.twin.size()); ++fe)
+  {
+    if(!coarse.is_cut[std::size_t(cs.edge_of[std::size_t(fe)])]) continue;
+    ++seams;
+    EXPECT_TRUE(on_seam[std::size_t(coarse.fine_vertex[std::size_t(cs.edge_source(fe))])]);
+    EXPECT_TRUE(on_seam[std::size_t(coarse.fine_vertex[std::size_t(cs.edge_target(fe))])]);
+  }
+  EXPECT_GT(seams, 0);
+  EXPECT_EQ(coarse.face_lambda.size(), cs.number_of_faces());
+}
+
+// A mesh of more than tuning::staged_cut_copy_min_ratio times the copy's
+// faces goes through the copy in two stages: a valid atlas, the user's seams
+// kept, the same for any thread count.
+TEST(Multiresolution, a_copy_in_two_stages_gives_a_valid_atlas)
+{
+  const Soup soup = test_torus();
+  Surface_mesh mesh;
+  const auto vertex_of = build_mesh(soup, mesh);
+  constexpr int faces = 140;
+  {
+    ic::Indexed_surface<Surface_mesh> surface;
+    ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
+    SMP::Cut_parameterization_options o;
+    o.multiresolution_faces = faces;
+    ASSERT_TRUE(ic::cuts_copy_in_two_stages(surface, o));
+  }
+  const std::vector<std::pair<std::size_t, std::size_t>> meridian(soup.cut.begin() + 72, soup.cut.end());
+  const auto given = soup_edges(mesh, vertex_of, meridian);
+  Cut_run<Surface_mesh> run(mesh);
+  for(auto e : given) run.seam_storage[e] = true;
+  run.run(SMP::parameters::multiresolution_faces(faces));
+  ASSERT_TRUE(check_cut_result(mesh, run).valid);
+  EXPECT_EQ(run.result.border_crossings, std::size_t(0));
+  for(auto e : given) EXPECT_TRUE(run.is_seam(e));
+  expect_same_result_for_thread_counts(mesh, {1, 2}, [](Cut_run<Surface_mesh>& r) {
+    return r.run(SMP::parameters::multiresolution_faces(faces));
+  });
+}
+
 TEST(Multiresolution, negative_size_is_a_wrong_parameter)
 {
   using Mesh = Surface_mesh;

@@ -167,7 +167,7 @@ constexpr double large_mesh_box_tolerance = 1e-3;
 constexpr int carried_box_iterations = 8;
 /// ... and on a mesh of more than large_carried_box_faces faces, at most this many (there each iteration
 /// factors a Hessian of hundreds of thousands of unknowns, and the fit's E_d settles within these)
-constexpr int large_carried_box_iterations = 4;
+constexpr int large_carried_box_iterations = 3;
 constexpr std::size_t large_carried_box_faces = 100000;
 /// the box's solve stops in a slow tail: after this many iterations, ...
 constexpr int box_slow_tail_after = 60;
@@ -261,6 +261,12 @@ constexpr double lambda_candidate_length_ratio = 1.5;
 /// the multiresolution copy's λ is scaled by (mean edge ratio)^this
 constexpr double coarse_lambda_exponent = 0.25;
 
+// -- the copy that decides the cuts of a very large mesh (pipeline/plan.h)
+/// above this many times multiresolution_faces faces the copy is made in two stages ...
+constexpr std::size_t staged_cut_copy_min_ratio = 32;
+/// ... the first on the index arrays, to this many times multiresolution_faces faces
+constexpr std::size_t staged_cut_copy_ratio = 16;
+
 // -- the solved copies that start the final solve of a mesh cut on a copy (pipeline/two_levels.h)
 /// Faces of one copy over those of the copy that starts its solve: a mesh of 8 times
 /// multiresolution_faces or more starts from a chain of copies (640k faces: 160k, 40k, 10k).
@@ -294,6 +300,11 @@ constexpr int carried_relaxation_steps = 3;
 constexpr double carried_relaxation_reach = 0.8;
 /// step halvings of the backtracking at most
 constexpr int carried_relaxation_halvings = 20;
+/// after the sweeps, a face above this energy is crushed and the fans of its vertices move again (at 1e9
+/// a 640k carried map kept a face of 7.6e8 and its fit ended above the default target) ...
+constexpr double carried_crushed_energy = 1e4;
+/// ... in at most this many more sweeps over them
+constexpr int carried_crushed_sweeps = 100;
 
 // -- shape packing (atlas/shape_packing.h)
 /// a chart's raster holds every texel its triangles come within this many texels of (rounding)

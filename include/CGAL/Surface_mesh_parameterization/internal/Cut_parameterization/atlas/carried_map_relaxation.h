@@ -3,7 +3,10 @@
 // fan holds a face far from isometric moves inside its fan, by a few Newton
 // steps on its faces' symmetric Dirichlet energy with the other vertices
 // held. Undoing the collapses crushes a few faces, and the input's solve
-// would otherwise spend full-resolution Newton iterations on them. A step
+// would otherwise spend full-resolution Newton iterations on them; where
+// restored vertices were shrunk together, a vertex inside the cluster gains
+// nothing alone, so the faces still crushed after the sweeps move their
+// neighbourhood again, sweep after sweep, from the cluster's rim in. A step
 // never reaches a collapse of a fan face, so no face flips; border vertices
 // are held, so the chart's border does not move. Serial, in vertex order:
 // the same result on any number of threads.
@@ -85,7 +88,11 @@ inline double fan_energy(const Chart_mesh& chart, const UV_vector& x, const int*
 /// vertex whose fan holds a face of symmetric Dirichlet energy above
 /// tuning::carried_relaxation_energy taking up to
 /// tuning::carried_relaxation_steps projected Newton steps, bounded before a
-/// fan face collapses and backtracked until its fan's energy falls.
+/// fan face collapses and backtracked until its fan's energy falls; then,
+/// while a face of a flagged chart has an energy above
+/// tuning::carried_crushed_energy (crushed), up to
+/// tuning::carried_crushed_sweeps more sweeps over the vertices of the fans
+/// of its vertices, until none is crushed or none of them moves.
 ///
 /// Precondition: no face of a flagged chart is flipped or collapsed in `x`.
 /// Postcondition: the same holds, the border vertices have not moved, and
@@ -114,67 +121,102 @@ inline void relax_carried_map(const Chart_mesh& chart, const std::vector<char>& 
     movable[v] = flagged && closed_fan(chart, first, last, after, before);
   }
 
+  // up to carried_relaxation_steps Newton steps of vertex v in its fan; true if it moved
+  auto relax_vertex = [&](std::size_t v) {
+    bool moved = false;
+    const int* first = corners.data() + start[v];
+    const int* last = corners.data() + start[v + 1];
+    double worst = 0.;
+    double energy = fan_energy(chart, x, first, last, worst);
+    if(!(worst > tuning::carried_relaxation_energy) || !std::isfinite(energy)) return false;
+    for(int step = 0; step < tuning::carried_relaxation_steps; ++step)
+    {
+      Vector2 g = Vector2::Zero();
+      Matrix2 H = Matrix2::Zero();
+      for(const int* c = first; c != last; ++c)
+      {
+        const std::size_t f = std::size_t(*c / 3);
+        const int k = *c % 3;
+        const Matrix2 J = chart.jacobian(x, f);
+        const Eigen::Matrix<double, 4, 2> B = jacobian_operator(chart.rest_inverse[f]).middleCols<2>(2 * k);
+        g += chart.area[f] * (B.transpose() * symmetric_dirichlet_gradient(J));
+        H += chart.area[f] * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
+      }
+      H.diagonal().array() += tuning::hessian_shift * (std::max)(H.trace(), 1e-300);
+      const double det = H.determinant();
+      if(!(det > 0.)) return moved;
+      const Vector2 d = -(Matrix2() << H(1, 1), -H(0, 1), -H(1, 0), H(0, 0)).finished() * g / det;
+      const double slope = g.dot(d);
+      if(!(slope < 0.)) return moved;
+      // the longest step before a fan face collapses
+      double reach = std::numeric_limits<double>::infinity();
+      for(const int* c = first; c != last; ++c)
+      {
+        const std::size_t f = std::size_t(*c / 3);
+        const int k = *c % 3;
+        Matrix2 dD = Matrix2::Zero();
+        if(k == 0) dD.colwise() = -d;
+        else dD.col(k - 1) = d;
+        reach = (std::min)(reach, first_collapse_time(chart.uv_edges(x, f), dD));
+      }
+      double alpha = (std::min)(1., tuning::carried_relaxation_reach * reach);
+      const Vector2 p = x.segment<2>(2 * Eigen::Index(v));
+      bool decreased = false;
+      for(int halving = 0; halving < tuning::carried_relaxation_halvings && !decreased; ++halving, alpha *= 0.5)
+      {
+        x.segment<2>(2 * Eigen::Index(v)) = p + alpha * d;
+        double w = 0.;
+        const double trial = fan_energy(chart, x, first, last, w);
+        decreased = trial <= energy + tuning::armijo * alpha * slope;
+        if(decreased) energy = trial;
+      }
+      if(!decreased)
+      {
+        x.segment<2>(2 * Eigen::Index(v)) = p;
+        return moved;
+      }
+      moved = true;
+    }
+    return moved;
+  };
   for(int sweep = 0; sweep < tuning::carried_relaxation_sweeps; ++sweep)
   {
     bool moved = false;
     for(std::size_t v = 0; v < nv; ++v)
-    {
-      if(!movable[v]) continue;
-      const int* first = corners.data() + start[v];
-      const int* last = corners.data() + start[v + 1];
-      double worst = 0.;
-      double energy = fan_energy(chart, x, first, last, worst);
-      if(!(worst > tuning::carried_relaxation_energy) || !std::isfinite(energy)) continue;
-      for(int step = 0; step < tuning::carried_relaxation_steps; ++step)
-      {
-        Vector2 g = Vector2::Zero();
-        Matrix2 H = Matrix2::Zero();
-        for(const int* c = first; c != last; ++c)
-        {
-          const std::size_t f = std::size_t(*c / 3);
-          const int k = *c % 3;
-          const Matrix2 J = chart.jacobian(x, f);
-          const Eigen::Matrix<double, 4, 2> B = jacobian_operator(chart.rest_inverse[f]).middleCols<2>(2 * k);
-          g += chart.area[f] * (B.transpose() * symmetric_dirichlet_gradient(J));
-          H += chart.area[f] * (B.transpose() * symmetric_dirichlet_projected_hessian(J) * B);
-        }
-        H.diagonal().array() += tuning::hessian_shift * (std::max)(H.trace(), 1e-300);
-        const double det = H.determinant();
-        if(!(det > 0.)) break;
-        const Vector2 d = -(Matrix2() << H(1, 1), -H(0, 1), -H(1, 0), H(0, 0)).finished() * g / det;
-        const double slope = g.dot(d);
-        if(!(slope < 0.)) break;
-        // the longest step before a fan face collapses
-        double reach = std::numeric_limits<double>::infinity();
-        for(const int* c = first; c != last; ++c)
-        {
-          const std::size_t f = std::size_t(*c / 3);
-          const int k = *c % 3;
-          Matrix2 dD = Matrix2::Zero();
-          if(k == 0) dD.colwise() = -d;
-          else dD.col(k - 1) = d;
-          reach = (std::min)(reach, first_collapse_time(chart.uv_edges(x, f), dD));
-        }
-        double alpha = (std::min)(1., tuning::carried_relaxation_reach * reach);
-        const Vector2 p = x.segment<2>(2 * Eigen::Index(v));
-        bool decreased = false;
-        for(int halving = 0; halving < tuning::carried_relaxation_halvings && !decreased; ++halving, alpha *= 0.5)
-        {
-          x.segment<2>(2 * Eigen::Index(v)) = p + alpha * d;
-          double w = 0.;
-          const double trial = fan_energy(chart, x, first, last, w);
-          decreased = trial <= energy + tuning::armijo * alpha * slope;
-          if(decreased) energy = trial;
-        }
-        if(!decreased)
-        {
-          x.segment<2>(2 * Eigen::Index(v)) = p;
-          break;
-        }
-        moved = true;
-      }
-    }
+      if(movable[v] && relax_vertex(v)) moved = true;
     if(!moved) break;
+  }
+  // a face still crushed (restored vertices shrunk together): the vertices of its faces' fans
+  // again, sweep after sweep, until none is crushed or they no longer move
+  auto crushed = [&](std::size_t f) {
+    const std::size_t chart_index = std::size_t(chart_of_face[f]);
+    return chart_index < charts.size() && charts[chart_index]
+           && symmetric_dirichlet(chart.jacobian(x, f)) > tuning::carried_crushed_energy;
+  };
+  std::vector<std::size_t> faces;
+  for(std::size_t f = 0; f < chart.number_of_faces(); ++f)
+    if(crushed(f)) faces.push_back(f);
+  std::vector<std::size_t> work;
+  for(int sweep = 0; sweep < tuning::carried_crushed_sweeps && !faces.empty(); ++sweep)
+  {
+    work.clear();
+    for(std::size_t f : faces)
+      for(int u : chart.faces[f])
+        for(const int* c = corners.data() + start[std::size_t(u)]; c != corners.data() + start[std::size_t(u) + 1]; ++c)
+          for(int w : chart.faces[std::size_t(*c / 3)])
+            if(movable[std::size_t(w)]) work.push_back(std::size_t(w));
+    std::sort(work.begin(), work.end());
+    work.erase(std::unique(work.begin(), work.end()), work.end());
+    bool moved = false;
+    for(std::size_t v : work)
+      if(relax_vertex(v)) moved = true;
+    if(!moved) break;
+    faces.clear(); // the crushed faces among those the moves changed
+    for(std::size_t v : work)
+      for(const int* c = corners.data() + start[v]; c != corners.data() + start[v + 1]; ++c)
+        if(crushed(std::size_t(*c / 3))) faces.push_back(std::size_t(*c / 3));
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   }
 }
 

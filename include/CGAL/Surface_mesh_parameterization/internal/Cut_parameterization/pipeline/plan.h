@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/finish_atlas.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/multiresolution.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progress.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/progressive_simplification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/relax.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/two_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Cut_parameterization/pipeline/work_log.h>
@@ -237,8 +238,21 @@ bool cuts_copy_on_index_arrays(const Surface& surface, const Cut_parameterizatio
   return o.preset == Preset::FAST && !is_hard_surface(surface);
 }
 
+/// True if the copy that decides the cuts of `surface` is made in two
+/// stages (simplify_surface_in_two_stages(), first to
+/// tuning::staged_cut_copy_ratio times the copy's faces): above
+/// tuning::staged_cut_copy_min_ratio times them, but for a hard-surface part.
+/// CGAL's collapse of the whole input took a third of a 640k-face run; the
+/// first stage moves the cuts a little (doc/design/pipeline.dox).
+template <typename Surface>
+bool cuts_copy_in_two_stages(const Surface& surface, const Cut_parameterization_options& o)
+{
+  return surface.number_of_faces() > tuning::staged_cut_copy_min_ratio * std::size_t(o.multiresolution_faces)
+         && !is_hard_surface(surface);
+}
+
 /// decide_cuts() on a copy simplified to about `o.multiresolution_faces`
-/// faces (cuts_copy_on_index_arrays() tells how),
+/// faces (cuts_copy_on_index_arrays() and cuts_copy_in_two_stages() tell how),
 /// at λ scaled by (ℓ_input / ℓ_copy)^tuning::coarse_lambda_exponent,
 /// split there (split_on_coarse_copy()), its cuts carried back to `surface`,
 /// then the cut mesh of `surface` cut there, without a map (the plan
@@ -251,10 +265,15 @@ bool decide_cuts_on_coarse_copy(const Surface& surface, const std::vector<double
 {
   Scoped_timer initialization(log.timings.initialization);
   Coarse_surface coarse;
-  const auto simplify = cuts_copy_on_index_arrays(surface, o) ? simplify_for_carrying<Surface>
-                                                               : simplify_surface<Surface>;
-  if(!simplify(surface, state.is_cut, state.rules.forbidden, face_lambda, std::size_t(o.multiresolution_faces), coarse))
-    return false;
+  const std::size_t faces = std::size_t(o.multiresolution_faces);
+  const bool made
+    = cuts_copy_on_index_arrays(surface, o)
+        ? simplify_for_carrying(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse)
+      : cuts_copy_in_two_stages(surface, o)
+        ? simplify_surface_in_two_stages(surface, state.is_cut, state.rules.forbidden, face_lambda,
+                                         tuning::staged_cut_copy_ratio * faces, faces, coarse)
+        : simplify_surface(surface, state.is_cut, state.rules.forbidden, face_lambda, faces, coarse);
+  if(!made) return false;
   initialization.stop();
   Run_args coarse_run = run; // the copy's longer edges make seams dearer, its coarser map pulls the other way
   coarse_run.lambda *= std::pow(mean_edge_length(surface) / mean_edge_length(coarse.surface),

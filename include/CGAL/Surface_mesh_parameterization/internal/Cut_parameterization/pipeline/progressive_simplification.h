@@ -326,6 +326,25 @@ bool simplify_for_carrying(const Surface& surface, const std::vector<char>& is_c
   return true;
 }
 
+/// simplify_surface() in two stages: simplify_for_carrying() to
+/// `first_faces` faces, then simplify_surface() of that copy to about
+/// `target_faces`; the result is as simplify_surface()'s (every vertex a
+/// vertex of `surface`, `fine_vertex` in its indices, λ from its faces), and
+/// CGAL's collapse only sees the smaller copy (doc/design/pipeline.dox).
+template <typename Surface>
+bool simplify_surface_in_two_stages(const Surface& surface, const std::vector<char>& is_cut,
+                                    const std::vector<char>& forbidden, const std::vector<double>& face_lambda,
+                                    std::size_t first_faces, std::size_t target_faces, Coarse_surface& coarse)
+{
+  Coarse_surface first;
+  if(!simplify_for_carrying(surface, is_cut, forbidden, face_lambda, first_faces, first)
+     || !simplify_surface(first.surface, first.is_cut, first.forbidden, first.face_lambda, target_faces, coarse))
+    return false;
+  for(int& v : coarse.fine_vertex) v = first.fine_vertex[std::size_t(v)];
+  coarse.face_lambda = coarse_face_lambda(surface, face_lambda, coarse);
+  return true;
+}
+
 } // namespace cut
 } // namespace internal
 } // namespace Surface_mesh_parameterization
