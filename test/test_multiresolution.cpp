@@ -190,7 +190,7 @@ TEST(Multiresolution, a_copy_in_two_stages_gives_a_valid_atlas)
   const Soup soup = test_torus();
   Surface_mesh mesh;
   const auto vertex_of = build_mesh(soup, mesh);
-  constexpr int faces = 140;
+  const int faces = 140;
   {
     ic::Indexed_surface<Surface_mesh> surface;
     ASSERT_TRUE(ic::index_surface(mesh, get(CGAL::vertex_point, mesh), surface) == ic::Indexing_status::OK);
@@ -206,7 +206,7 @@ TEST(Multiresolution, a_copy_in_two_stages_gives_a_valid_atlas)
   ASSERT_TRUE(check_cut_result(mesh, run).valid);
   EXPECT_EQ(run.result.border_crossings, std::size_t(0));
   for(auto e : given) EXPECT_TRUE(run.is_seam(e));
-  expect_same_result_for_thread_counts(mesh, {1, 2}, [](Cut_run<Surface_mesh>& r) {
+  expect_same_result_for_thread_counts(mesh, {1, 2}, [faces](Cut_run<Surface_mesh>& r) {
     return r.run(SMP::parameters::multiresolution_faces(faces));
   });
 }

@@ -83,8 +83,8 @@ inline double fan_energy(const Chart_mesh& chart, const UV_vector& x, const int*
 } // namespace carried_relaxation
 
 /// Relaxes `x` on the charts of `chart` whose flag in `charts` is set (per
-/// chart, in the order of chart_of_faces()): up to
-/// tuning::carried_relaxation_sweeps sweeps over the interior vertices, each
+/// chart, in the order of chart_of_faces()): up to `sweeps` sweeps over the
+/// interior vertices, each
 /// vertex whose fan holds a face of symmetric Dirichlet energy above
 /// tuning::carried_relaxation_energy taking up to
 /// tuning::carried_relaxation_steps projected Newton steps, bounded before a
@@ -97,7 +97,8 @@ inline double fan_energy(const Chart_mesh& chart, const UV_vector& x, const int*
 /// Precondition: no face of a flagged chart is flipped or collapsed in `x`.
 /// Postcondition: the same holds, the border vertices have not moved, and
 /// the energy of each flagged chart is not higher.
-inline void relax_carried_map(const Chart_mesh& chart, const std::vector<char>& charts, UV_vector& x)
+inline void relax_carried_map(const Chart_mesh& chart, const std::vector<char>& charts, UV_vector& x,
+                              int sweeps = tuning::carried_relaxation_sweeps)
 {
   using namespace carried_relaxation;
   int number_of_charts = 0;
@@ -179,7 +180,7 @@ inline void relax_carried_map(const Chart_mesh& chart, const std::vector<char>& 
     }
     return moved;
   };
-  for(int sweep = 0; sweep < tuning::carried_relaxation_sweeps; ++sweep)
+  for(int sweep = 0; sweep < sweeps; ++sweep)
   {
     bool moved = false;
     for(std::size_t v = 0; v < nv; ++v)
