@@ -194,30 +194,36 @@ inline void relax_carried_map(const Chart_mesh& chart, const std::vector<char>& 
     return chart_index < charts.size() && charts[chart_index]
            && symmetric_dirichlet(chart.jacobian(x, f)) > tuning::carried_crushed_energy;
   };
-  std::vector<std::size_t> faces;
+  auto for_fan = [&](std::size_t v, auto&& visit) { // each face around v
+    for(const int* c = corners.data() + start[v]; c != corners.data() + start[v + 1]; ++c) visit(std::size_t(*c / 3));
+  };
+  auto sort_unique = [](std::vector<std::size_t>& list) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  };
+  std::vector<std::size_t> faces, work;
   for(std::size_t f = 0; f < chart.number_of_faces(); ++f)
     if(crushed(f)) faces.push_back(f);
-  std::vector<std::size_t> work;
   for(int sweep = 0; sweep < tuning::carried_crushed_sweeps && !faces.empty(); ++sweep)
   {
     work.clear();
     for(std::size_t f : faces)
       for(int u : chart.faces[f])
-        for(const int* c = corners.data() + start[std::size_t(u)]; c != corners.data() + start[std::size_t(u) + 1]; ++c)
-          for(int w : chart.faces[std::size_t(*c / 3)])
+        for_fan(std::size_t(u), [&](std::size_t g) {
+          for(int w : chart.faces[g])
             if(movable[std::size_t(w)]) work.push_back(std::size_t(w));
-    std::sort(work.begin(), work.end());
-    work.erase(std::unique(work.begin(), work.end()), work.end());
+        });
+    sort_unique(work);
     bool moved = false;
     for(std::size_t v : work)
       if(relax_vertex(v)) moved = true;
     if(!moved) break;
     faces.clear(); // the crushed faces among those the moves changed
     for(std::size_t v : work)
-      for(const int* c = corners.data() + start[v]; c != corners.data() + start[v + 1]; ++c)
-        if(crushed(std::size_t(*c / 3))) faces.push_back(std::size_t(*c / 3));
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+      for_fan(v, [&](std::size_t g) {
+        if(crushed(g)) faces.push_back(g);
+      });
+    sort_unique(faces);
   }
 }
 
